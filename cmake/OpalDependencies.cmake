@@ -1,0 +1,84 @@
+# Every dependency Opal uses, found once, here. A missing one stops the configure step
+# with a message naming the Debian package that provides it (scripts/setup installs them).
+
+function(opal_require found name package)
+  if(NOT ${found})
+    message(FATAL_ERROR "Opal needs ${name}: install the Debian package '${package}' (or run scripts/setup)")
+  endif()
+endfunction()
+
+find_package(PkgConfig QUIET)
+opal_require(PkgConfig_FOUND "pkg-config" "pkg-config")
+
+# OpenSubdiv: its packaged CMake config names static libraries that Debian does not ship,
+# so find_package fails fatally; find the header and library ourselves.
+find_path(OPENSUBDIV_INCLUDE_DIR opensubdiv/far/topologyRefiner.h)
+find_library(OPENSUBDIV_CPU_LIBRARY osdCPU)
+if(OPENSUBDIV_INCLUDE_DIR AND OPENSUBDIV_CPU_LIBRARY)
+  add_library(Opal::OpenSubdiv UNKNOWN IMPORTED)
+  set_target_properties(Opal::OpenSubdiv PROPERTIES
+    IMPORTED_LOCATION "${OPENSUBDIV_CPU_LIBRARY}"
+    INTERFACE_INCLUDE_DIRECTORIES "${OPENSUBDIV_INCLUDE_DIR}")
+  set(OpenSubdiv_FOUND TRUE)
+endif()
+opal_require(OpenSubdiv_FOUND "OpenSubdiv" "libosd-dev")
+
+# OpenColorIO: the CMake config computes a wrong include prefix; pkg-config is right.
+pkg_check_modules(OCIO QUIET IMPORTED_TARGET OpenColorIO)
+opal_require(OCIO_FOUND "OpenColorIO" "libopencolorio-dev")
+add_library(Opal::OpenColorIO ALIAS PkgConfig::OCIO)
+
+# OpenImageIO: its target lists /usr/include/opencv4 although OpenCV is not a dependency.
+find_package(OpenImageIO CONFIG QUIET)
+opal_require(OpenImageIO_FOUND "OpenImageIO" "libopenimageio-dev")
+foreach(prop INTERFACE_INCLUDE_DIRECTORIES INTERFACE_SYSTEM_INCLUDE_DIRECTORIES)
+  get_target_property(dirs OpenImageIO::OpenImageIO ${prop})
+  if(dirs)
+    list(FILTER dirs EXCLUDE REGEX "opencv4")
+    set_target_properties(OpenImageIO::OpenImageIO PROPERTIES ${prop} "${dirs}")
+  endif()
+endforeach()
+
+find_package(Imath CONFIG QUIET)
+opal_require(Imath_FOUND "Imath" "libimath-dev")
+find_package(OpenEXR CONFIG QUIET)
+opal_require(OpenEXR_FOUND "OpenEXR" "libopenexr-dev")
+
+find_package(embree 3.13 CONFIG QUIET)
+opal_require(embree_FOUND "Embree 3" "libembree-dev")
+
+# oneTBB: link TBB::tbb only; TBB::tbbbind has a broken hwloc dependency on Debian 12.
+find_package(TBB CONFIG QUIET COMPONENTS tbb)
+opal_require(TBB_FOUND "oneTBB" "libtbb-dev")
+
+find_package(Eigen3 CONFIG QUIET)
+opal_require(Eigen3_FOUND "Eigen" "libeigen3-dev")
+find_package(zstd CONFIG QUIET)
+opal_require(zstd_FOUND "zstd" "libzstd-dev")
+find_package(nlohmann_json CONFIG QUIET)
+opal_require(nlohmann_json_FOUND "nlohmann-json" "nlohmann-json3-dev")
+find_package(CLI11 CONFIG QUIET)
+opal_require(CLI11_FOUND "CLI11" "libcli11-dev")
+find_package(assimp CONFIG QUIET)
+opal_require(assimp_FOUND "Assimp" "libassimp-dev")
+
+set(OpenGL_GL_PREFERENCE GLVND)
+find_package(OpenGL QUIET)
+opal_require(OpenGL_FOUND "OpenGL" "libgl-dev")
+find_package(glfw3 CONFIG QUIET)
+opal_require(glfw3_FOUND "GLFW" "libglfw3-dev")
+pkg_check_modules(IMGUI QUIET IMPORTED_TARGET imgui)
+opal_require(IMGUI_FOUND "Dear ImGui" "libimgui-dev")
+find_program(OPAL_GLAD_EXECUTABLE glad PATHS /usr/bin NO_DEFAULT_PATH)
+opal_require(OPAL_GLAD_EXECUTABLE "glad (OpenGL loader generator)" "python3-glad")
+
+find_package(GTest CONFIG QUIET)
+opal_require(GTest_FOUND "GoogleTest" "libgtest-dev")
+find_package(benchmark CONFIG QUIET)
+opal_require(benchmark_FOUND "Google Benchmark" "libbenchmark-dev")
+
+if(TARGET zstd::libzstd_shared)
+  add_library(Opal::zstd ALIAS zstd::libzstd_shared)
+else()
+  add_library(Opal::zstd ALIAS zstd::libzstd_static)
+endif()

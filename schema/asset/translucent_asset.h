@@ -1,0 +1,87 @@
+// The in-memory form of a baked translucent asset: everything the render delegate needs
+// to relight it. Lengths are in the asset's scene units; `unitsPerMm` converts them to the
+// millimetres that material coefficients (mm^-1) and the profile basis (mm) use.
+#pragma once
+
+#include "schema/scatter/material.h"
+#include "schema/scatter/profile_basis.h"
+#include "schema/wavelet/chart_layout.h"
+#include "schema/wavelet/sparse.h"
+
+#include <Imath/ImathVec.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace opal {
+
+// The subdivided (limit-surface) mesh that is rendered. Right-handed, counter-clockwise
+// winding seen from outside, normals point outward.
+struct RenderMesh {
+    std::vector<Imath::V3f> points;
+    std::vector<Imath::V3f> normals;  // per vertex, unit
+    std::vector<std::int32_t> faceVertexCounts;
+    std::vector<std::int32_t> faceVertexIndices;
+};
+
+// One surface sample x_i with its normal and the surface area it stands for.
+struct SurfaceSample {
+    Imath::V3f position;
+    Imath::V3f normal;
+    float area = 0.0f;  // scene units^2
+};
+
+// Per render-mesh vertex, weights onto nearby samples (CSR: vertex v uses entries
+// offsets[v] .. offsets[v+1]); the weights of one vertex sum to 1.
+struct VertexWeights {
+    std::vector<std::uint32_t> offsets;  // vertices + 1
+    std::vector<std::uint32_t> samples;
+    std::vector<float> weights;
+};
+
+// The two-step compressed transfer (DESIGN.md section 5): one matrix per basis function
+// k, ^{w1}T_k^{w0^-1}. Rows are CDF 9/7 coefficients of the output (spatial) dimension,
+// columns Haar coefficients of the light dimension, both in the chart layout.
+struct CompressedTransfer {
+    std::vector<SparseMatrix> perBasis;  // K
+    double keepFraction = 0.01;          // step 1
+    double energyFraction = 0.97;        // step 2
+};
+
+// Environment light transfer (Ng et al. 2003): per sample, visibility x cosine over a
+// 6 x size x size cube map, Haar transformed, top terms kept. F_t(eta, .) is applied at
+// run time through `fresnelTerms` moments: vector m holds V cos(theta) P_m(cos(theta)).
+struct EnvironmentTransfer {
+    std::uint32_t cubeFaceSize = 32;
+    std::uint32_t fresnelTerms = 1;
+    // CSR over (sample * fresnelTerms + m).
+    std::vector<std::uint32_t> offsets;
+    std::vector<std::uint32_t> indices;  // cube-map Haar coefficient index
+    std::vector<float> values;
+};
+
+struct BakeSettings {
+    std::string source;            // input mesh path as given
+    std::string scheme;            // "catmullClark" or "loop"
+    std::uint32_t level = 0;       // uniform subdivision level
+    std::uint64_t seed = 1;
+    std::uint32_t envTerms = 128;
+};
+
+struct TranslucentAsset {
+    std::string name;
+    double unitsPerMm = 1.0;
+    RenderMesh mesh;
+    ChartLayout layout;
+    std::vector<SurfaceSample> samples;  // layout.cells() of them, in grid order
+    VertexWeights vertexWeights;
+    ProfileBasis basis;
+    CompressedTransfer transfer;
+    EnvironmentTransfer environment;
+    Material defaultMaterial;
+    EditableRange range;
+    BakeSettings bake;
+};
+
+}  // namespace opal

@@ -1,0 +1,28 @@
+// The Jensen et al. 2001 dipole diffusion profile and the Fresnel terms it needs.
+// All lengths in millimetres, coefficients in mm^-1 (DESIGN.md section 2; the seed
+// paper's equation (4) has typos, these are the corrected formulas).
+#pragma once
+
+namespace opal {
+
+// One color channel of a homogeneous scattering medium.
+struct DipoleCoefficients {
+    double sigmaSPrime = 1.0;  // reduced scattering coefficient sigma_s' = (1-g) sigma_s [mm^-1]
+    double sigmaA = 0.01;      // absorption coefficient [mm^-1]
+    double eta = 1.3;          // relative index of refraction (inside / outside)
+};
+
+// F_dr(eta) = -1.440/eta^2 + 0.710/eta + 0.668 + 0.0636 eta  (Egan and Hilgeman fit).
+double fresnelDiffuseReflectance(double eta);
+
+// R_d(r): diffuse reflectance profile at distance r [mm], in mm^-2.
+double dipoleProfile(double r, const DipoleCoefficients& c);
+
+// integral_0^inf R_d(r) 2 pi r dr in closed form, a function of alpha' and eta only.
+double dipoleTotalReflectance(double alphaPrime, double eta);
+
+// Exact unpolarized dielectric Fresnel transmittance 1 - F_r for light arriving from
+// outside (index 1) onto a medium of index eta, at incidence cos(theta) in [0, 1].
+double fresnelTransmittance(double eta, double cosTheta);
+
+}  // namespace opal

@@ -1,0 +1,74 @@
+// The PCA profile basis of DESIGN.md section 3 (the paper's section "Diffuse Scattering
+// Material Function Decomposition"): R_d(r, sigma) ~= sum_k s_k(sigma) b_k(r).
+#pragma once
+
+#include "schema/scatter/material.h"
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace opal {
+
+struct ProfileBasisSettings {
+    int K = 12;                      // number of basis functions kept
+    double rMax = 0.0;               // mm; 0 picks a default that covers the range's profiles
+    int radialSamples = 0;           // 0 picks the default
+    int trainingMaterials = 0;       // 0 picks the default
+    EditableRange range = EditableRange::coveringPresets();
+    std::uint64_t seed = 1;
+};
+
+class ProfileBasis {
+public:
+    ProfileBasis() = default;
+    // Rebuilds a basis from stored samples (as read from an asset).
+    // values is K x radii.size(), row-major. Throws opal::Error on inconsistent sizes.
+    ProfileBasis(std::vector<double> radii, std::vector<double> weights, std::vector<double> values,
+                 std::vector<double> eigenvalues, EditableRange range);
+
+    // Weighted PCA (Eigen SVD) over materials sampled log-uniformly in settings.range.
+    static ProfileBasis fit(const ProfileBasisSettings& settings);
+
+    int K() const { return static_cast<int>(eigenvalues_.size()); }
+    double rMax() const;
+    std::span<const double> radii() const { return radii_; }      // r_l, mm
+    std::span<const double> weights() const { return weights_; }  // w_l = 2 pi r_l dr_l
+    std::span<const double> values() const { return values_; }    // b_k(r_l), K x L
+    std::span<const double> eigenvalues() const { return eigenvalues_; }  // singular values^2
+    const EditableRange& range() const { return range_; }
+
+    // b_k(r), interpolated between the stored samples; 0 beyond rMax.
+    double evaluate(int k, double r) const;
+    // s_k(sigma) = sum_l w_l R_d(r_l, sigma) b_k(r_l): K numbers per channel.
+    std::vector<double> coefficients(const DipoleCoefficients& c) const;
+    std::array<std::vector<double>, 3> project(const Material& m) const;
+    // sum_k s_k b_k(r).
+    double reconstruct(std::span<const double> s, double r) const;
+    // Area-weighted relative L2 error of the K-term reconstruction of R_d(., c) over
+    // [0, rMax]: sqrt(sum_l w_l (R - R~)^2 / sum_l w_l R^2).
+    double relativeError(const DipoleCoefficients& c, int K = -1) const;
+
+private:
+    std::vector<double> radii_, weights_, values_, eigenvalues_;
+    EditableRange range_;
+};
+
+// Fast evaluation of all K basis functions at once, for the bake's N^2 inner loop:
+// a dense table in u = sqrt(r / rMax) with linear interpolation.
+class BasisLookup {
+public:
+    BasisLookup(const ProfileBasis& basis, int resolution = 4096);
+    int K() const { return K_; }
+    // out[k] = b_k(r) for k < K; r in mm. Zero beyond rMax.
+    void evaluate(float r, float* out) const;
+
+private:
+    int K_ = 0;
+    int resolution_ = 0;
+    float rMax_ = 0.0f;
+    std::vector<float> table_;  // (resolution + 1) x K
+};
+
+}  // namespace opal
