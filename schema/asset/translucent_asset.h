@@ -33,7 +33,8 @@ struct SurfaceSample {
 };
 
 // Per render-mesh vertex, weights onto nearby samples (CSR: vertex v uses entries
-// offsets[v] .. offsets[v+1]); the weights of one vertex sum to 1.
+// offsets[v] .. offsets[v+1]); the weights of one vertex sum to 1 (the sidecar accepts
+// 1 +- 1e-3), so every vertex has at least one entry.
 struct VertexWeights {
     std::vector<std::uint32_t> offsets;  // vertices + 1
     std::vector<std::uint32_t> samples;
@@ -42,7 +43,8 @@ struct VertexWeights {
 
 // The two-step compressed transfer (DESIGN.md section 5): one matrix per basis function
 // k, ^{w1}T_k^{w0^-1}. Rows are CDF 9/7 coefficients of the output (spatial) dimension,
-// columns Haar coefficients of the light dimension, both in the chart layout.
+// columns Haar coefficients of the light dimension, both in the chart layout: every
+// matrix is samples x samples, with strictly ascending columns within each row.
 struct CompressedTransfer {
     std::vector<SparseMatrix> perBasis;  // K
     double keepFraction = 0.01;          // step 1
@@ -55,9 +57,9 @@ struct CompressedTransfer {
 struct EnvironmentTransfer {
     std::uint32_t cubeFaceSize = 32;
     std::uint32_t fresnelTerms = 1;
-    // CSR over (sample * fresnelTerms + m).
+    // CSR over (sample * fresnelTerms + m); empty offsets mean "not baked".
     std::vector<std::uint32_t> offsets;
-    std::vector<std::uint32_t> indices;  // cube-map Haar coefficient index
+    std::vector<std::uint32_t> indices;  // cube-map Haar coefficient index, ascending per row
     std::vector<float> values;
 };
 
@@ -69,6 +71,9 @@ struct BakeSettings {
     std::uint32_t envTerms = 128;
 };
 
+// Where each part lives on disk: name.usda holds name, unitsPerMm, mesh, basis,
+// defaultMaterial, range and bake; the sidecar name.opal (sidecar.h) holds layout,
+// samples, vertexWeights, transfer and environment.
 struct TranslucentAsset {
     std::string name;
     double unitsPerMm = 1.0;

@@ -1,0 +1,108 @@
+#include "schema/asset/atomic_file.h"
+
+#include "schema/error.h"
+
+#include <cerrno>
+#include <cstring>
+#include <random>
+#include <sstream>
+#include <string>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace opal {
+namespace {
+
+constexpr std::size_t kBufferBytes = 1 << 20;
+
+std::filesystem::path temporaryPathFor(const std::filesystem::path& target) {
+    std::random_device device;
+    std::uint64_t random = (std::uint64_t(device()) << 32) ^ device();
+    std::ostringstream name;
+    name << target.filename().string() << ".tmp-" << ::getpid() << '-' << std::hex << random;
+    return target.parent_path() / name.str();
+}
+
+std::string errnoText() { return std::strerror(errno); }
+
+// fsync of a directory makes the rename durable; some file systems refuse it (EINVAL),
+// which only means they give no such guarantee.
+bool syncDirectory(const std::filesystem::path& directory) {
+    std::filesystem::path dir = directory.empty() ? std::filesystem::path(".") : directory;
+    int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (fd < 0) return false;
+    bool ok = ::fsync(fd) == 0 || errno == EINVAL;
+    ::close(fd);
+    return ok;
+}
+
+}  // namespace
+
+AtomicFileWriter::AtomicFileWriter(std::filesystem::path target)
+    : target_(std::move(target)), temporary_(temporaryPathFor(target_)) {
+    fd_ = ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd_ < 0) fail("cannot create the temporary file");
+    buffer_.reserve(kBufferBytes);
+}
+
+AtomicFileWriter::~AtomicFileWriter() {
+    if (fd_ >= 0) ::close(fd_);
+    if (!committed_) ::unlink(temporary_.c_str());
+}
+
+void AtomicFileWriter::fail(const char* what) const {
+    std::string reason = errnoText();
+    throw Error(target_.string() + ": " + what + " '" + temporary_.string() + "': " + reason);
+}
+
+void AtomicFileWriter::writeAll(std::span<const std::byte> bytes, std::uint64_t offset) {
+    while (!bytes.empty()) {
+        ssize_t n = ::pwrite(fd_, bytes.data(), bytes.size(), static_cast<off_t>(offset));
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) fail("cannot write the temporary file");
+        bytes = bytes.subspan(static_cast<std::size_t>(n));
+        offset += static_cast<std::uint64_t>(n);
+    }
+}
+
+void AtomicFileWriter::flush() {
+    writeAll(buffer_, flushedSize_);
+    flushedSize_ = size_;
+    buffer_.clear();
+}
+
+void AtomicFileWriter::append(std::span<const std::byte> bytes) {
+    if (buffer_.size() + bytes.size() > kBufferBytes) flush();
+    if (bytes.size() >= kBufferBytes) {
+        writeAll(bytes, flushedSize_);
+        size_ += bytes.size();
+        flushedSize_ = size_;
+        return;
+    }
+    buffer_.insert(buffer_.end(), bytes.begin(), bytes.end());
+    size_ += bytes.size();
+}
+
+void AtomicFileWriter::overwrite(std::uint64_t offset, std::span<const std::byte> bytes) {
+    if (offset + bytes.size() > size_)
+        throw Error(target_.string() + ": internal error: overwrite beyond the bytes written");
+    flush();
+    writeAll(bytes, offset);
+}
+
+void AtomicFileWriter::commit() {
+    flush();
+    if (::fsync(fd_) != 0) fail("cannot fsync the temporary file");
+    int fd = fd_;
+    fd_ = -1;
+    if (::close(fd) != 0) fail("cannot close the temporary file");
+    if (::rename(temporary_.c_str(), target_.c_str()) != 0)
+        fail("cannot rename into place the temporary file");
+    committed_ = true;
+    if (!syncDirectory(target_.parent_path()))
+        throw Error(target_.string() + ": written, but cannot fsync its directory: " + errnoText());
+}
+
+}  // namespace opal

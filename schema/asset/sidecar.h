@@ -1,0 +1,66 @@
+// The sidecar `name.opal` of a baked asset (DESIGN.md section 8; byte layout in
+// SIDECAR.md): the parts of a TranslucentAsset too big for the USDA layer — chart layout,
+// surface samples, vertex interpolation weights, compressed transfer, environment
+// transfer — in an Opal container of kind 'SCAT'. The render mesh, profile basis, default
+// material, editable range and bake settings live in the USDA layer; the sidecar's header
+// chunk records what it expects of them (SidecarHeader) so the two files can be checked to
+// belong together.
+#pragma once
+
+#include "schema/asset/chunk_format.h"
+#include "schema/asset/translucent_asset.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+
+namespace opal {
+
+inline constexpr FileKind kSidecarKind{"SCAT", {1, 0}};
+
+// The chunk tags (all required in version 1.0).
+namespace sidecar_chunk {
+inline constexpr ChunkTag kHeader{"HEAD"};
+inline constexpr ChunkTag kLayout{"CHRT"};
+inline constexpr ChunkTag kSamples{"SMPL"};
+inline constexpr ChunkTag kVertexWeights{"VWGT"};
+inline constexpr ChunkTag kTransfer{"TRNS"};
+inline constexpr ChunkTag kEnvironment{"ENVT"};
+}  // namespace sidecar_chunk
+
+struct SidecarWriteOptions {
+    int zstdLevel = 3;
+};
+
+// What the sidecar expects of the USDA half of the asset.
+struct SidecarHeader {
+    std::string name;
+    double unitsPerMm = 1.0;
+    std::uint64_t sampleCount = 0;
+    std::uint32_t basisCount = 0;   // K: matrices in the transfer, functions in the basis
+    std::uint32_t vertexCount = 0;  // render-mesh vertices the weights are for
+    std::uint64_t meshTopologyHash = 0;
+};
+
+// XXH64 of the render mesh's face vertex counts and indices and its vertex count
+// (SIDECAR.md): integers, so it survives the USDA text round trip exactly.
+std::uint64_t meshTopologyHash(const RenderMesh& mesh);
+
+// Validates the sidecar parts of `asset` (the same rules readSidecar applies) and writes
+// them atomically to `path`. Sparse CSR indices (transfer columns, environment cube-map
+// indices) must be strictly ascending within each row. Throws opal::Error naming the
+// file and chunk; on error the previous file at `path` is untouched.
+void writeSidecar(const std::filesystem::path& path, const TranslucentAsset& asset,
+                  const SidecarWriteOptions& options = {});
+
+// Reads and validates `path`, then fills asset.layout, samples, vertexWeights, transfer
+// and environment (all or nothing: on error `asset` is unchanged). Returns the header for
+// checkSidecarMatches. Throws opal::Error naming the file and chunk.
+SidecarHeader readSidecar(const std::filesystem::path& path, TranslucentAsset& asset);
+
+// Throws unless the header matches the USDA half of `asset`: name, unitsPerMm, K ==
+// basis.K(), vertexCount == mesh.points.size(), mesh topology hash.
+void checkSidecarMatches(const SidecarHeader& header, const TranslucentAsset& asset,
+                         const std::filesystem::path& sidecarPath);
+
+}  // namespace opal

@@ -1,0 +1,149 @@
+// readSidecar: decode each chunk into a local payload, validating as it goes (sizes before
+// allocations, CSR offsets before the indices that depend on them), then hand it over.
+#include "schema/asset/array_codec.h"
+#include "schema/asset/chunked_file.h"
+#include "schema/asset/sidecar.h"
+#include "schema/asset/sidecar_checks.h"
+
+namespace opal {
+namespace {
+
+using namespace sidecar_chunk;
+
+constexpr ChunkTag kKnownChunks[] = {kHeader, kLayout, kSamples, kVertexWeights, kTransfer, kEnvironment};
+
+struct Payload {
+    ChartLayout layout;
+    std::vector<SurfaceSample> samples;
+    VertexWeights vertexWeights;
+    CompressedTransfer transfer;
+    EnvironmentTransfer environment;
+};
+
+std::string str(std::uint64_t v) { return std::to_string(v); }
+
+SidecarHeader readHeader(ChunkSource src) {
+    SidecarHeader h;
+    h.name = src.readString(sidecar::kMaxNameBytes, "asset name");
+    h.unitsPerMm = src.readF64();
+    h.sampleCount = src.readU64();
+    h.basisCount = src.readU32();
+    h.vertexCount = src.readU32();
+    h.meshTopologyHash = src.readU64();
+    src.finish();
+    sidecar::checkUnitsPerMm(h.unitsPerMm, src.context());
+    return h;
+}
+
+ChartLayout readLayout(ChunkSource src, const SidecarHeader& header) {
+    ChartLayout layout;
+    layout.charts = src.readU32();
+    layout.log2Size = src.readU32();
+    src.finish();
+    sidecar::checkLayout(layout, src.context());
+    if (layout.cells() != header.sampleCount)
+        src.fail("layout has " + str(layout.cells()) + " cells, the header says " + str(header.sampleCount) + " samples");
+    return layout;
+}
+
+std::vector<SurfaceSample> readSamples(ChunkSource src, std::uint64_t expected) {
+    std::uint64_t count = src.readU64();
+    if (count != expected) src.fail(str(count) + " samples, the chart layout has " + str(expected) + " cells");
+    std::vector<float> positions = readFloatPlanes(src, 3 * count, "positions");
+    std::vector<float> normals = readFloatPlanes(src, 3 * count, "normals");
+    std::vector<float> areas = readFloatPlanes(src, count, "areas");
+    src.finish();
+    std::vector<SurfaceSample> samples(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        samples[i].position = {positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]};
+        samples[i].normal = {normals[3 * i], normals[3 * i + 1], normals[3 * i + 2]};
+        samples[i].area = areas[i];
+    }
+    sidecar::checkSamples(samples, expected, src.context());
+    return samples;
+}
+
+VertexWeights readVertexWeights(ChunkSource src, std::uint64_t samples, std::uint32_t expectedVertices) {
+    std::uint32_t vertices = src.readU32();
+    if (vertices != expectedVertices)
+        src.fail(str(vertices) + " vertices, the header says " + str(expectedVertices));
+    std::uint64_t entries = src.readU64();
+    VertexWeights w;
+    w.offsets = src.readArray<std::uint32_t>(std::uint64_t(vertices) + 1, "vertex offsets");
+    sidecar::checkOffsets<std::uint32_t>(w.offsets, vertices, entries, src.context(), "vertex offsets");
+    w.samples = readRowDeltas<std::uint32_t>(src, w.offsets, "vertex samples");
+    w.weights = readFloatPlanes(src, entries, "weights");
+    src.finish();
+    sidecar::checkVertexWeights(w, samples, src.context());
+    return w;
+}
+
+SparseMatrix readMatrix(ChunkSource& src, std::uint64_t samples, std::size_t k) {
+    std::string what = "matrix " + str(k);
+    SparseMatrix m;
+    m.rows = src.readU32();
+    m.cols = src.readU32();
+    std::uint64_t entries = src.readU64();
+    sidecar::checkMatrixShape(m, samples, src.context(), what);
+    m.rowOffsets = src.readArray<std::uint64_t>(std::uint64_t(m.rows) + 1, what + " row offsets");
+    sidecar::checkOffsets<std::uint64_t>(m.rowOffsets, m.rows, entries, src.context(), what + " row offsets");
+    m.columns = readRowDeltas<std::uint64_t>(src, m.rowOffsets, what + " columns");
+    sidecar::checkIndices<std::uint64_t>(m.rowOffsets, m.columns, m.cols, true, src.context(), what + " columns");
+    m.values = readFloatPlanes(src, entries, what + " values");
+    sidecar::checkFinite(m.values, src.context(), what + " values");
+    return m;
+}
+
+CompressedTransfer readTransfer(ChunkSource src, std::uint64_t samples, std::uint32_t expectedK) {
+    std::uint32_t K = src.readU32();
+    CompressedTransfer t;
+    t.keepFraction = src.readF64();
+    t.energyFraction = src.readF64();
+    sidecar::checkTransferHeader(K, t.keepFraction, t.energyFraction, src.context());
+    if (K != expectedK) src.fail("K = " + str(K) + " matrices, the header says " + str(expectedK));
+    for (std::size_t k = 0; k < K; ++k) t.perBasis.push_back(readMatrix(src, samples, k));
+    src.finish();
+    return t;
+}
+
+EnvironmentTransfer readEnvironment(ChunkSource src, std::uint64_t samples) {
+    EnvironmentTransfer env;
+    env.cubeFaceSize = src.readU32();
+    env.fresnelTerms = src.readU32();
+    sidecar::checkEnvironmentHeader(env, src.context());
+    std::uint64_t rows = src.readU64(), entries = src.readU64();
+    if (rows != 0 && rows != samples * env.fresnelTerms)
+        src.fail(str(rows) + " rows, expected 0 (not baked) or samples x Fresnel terms = " +
+                 str(samples * env.fresnelTerms));
+    if (rows == 0 && entries != 0) src.fail(str(entries) + " entries without rows");
+    if (rows != 0) env.offsets = src.readArray<std::uint32_t>(rows + 1, "row offsets");
+    if (rows != 0) sidecar::checkOffsets<std::uint32_t>(env.offsets, rows, entries, src.context(), "row offsets");
+    env.indices = readRowDeltas<std::uint32_t>(src, env.offsets, "cube-map indices");
+    env.values = readFloatPlanes(src, entries, "values");
+    src.finish();
+    sidecar::checkEnvironment(env, samples, src.context());
+    return env;
+}
+
+}  // namespace
+
+SidecarHeader readSidecar(const std::filesystem::path& path, TranslucentAsset& asset) {
+    ChunkedFileReader file(path, kSidecarKind);
+    file.rejectUnknownRequired(kKnownChunks);
+    SidecarHeader header = readHeader(file.open(kHeader));
+    Payload p;
+    p.layout = readLayout(file.open(kLayout), header);
+    std::uint64_t samples = p.layout.cells();
+    p.samples = readSamples(file.open(kSamples), samples);
+    p.vertexWeights = readVertexWeights(file.open(kVertexWeights), samples, header.vertexCount);
+    p.transfer = readTransfer(file.open(kTransfer), samples, header.basisCount);
+    p.environment = readEnvironment(file.open(kEnvironment), samples);
+    asset.layout = p.layout;
+    asset.samples = std::move(p.samples);
+    asset.vertexWeights = std::move(p.vertexWeights);
+    asset.transfer = std::move(p.transfer);
+    asset.environment = std::move(p.environment);
+    return header;
+}
+
+}  // namespace opal

@@ -1,0 +1,106 @@
+// writeSidecar: validate everything first, then stream each chunk into the container.
+#include "schema/asset/array_codec.h"
+#include "schema/asset/chunked_file.h"
+#include "schema/asset/sidecar.h"
+#include "schema/asset/sidecar_checks.h"
+
+namespace opal {
+namespace {
+
+using namespace sidecar_chunk;
+
+std::string writeContext(const std::filesystem::path& path, ChunkTag tag) {
+    return chunkContext(path, tag) + " (not written)";
+}
+
+void validate(const std::filesystem::path& path, const TranslucentAsset& a) {
+    sidecar::checkName(a.name, writeContext(path, kHeader));
+    sidecar::checkUnitsPerMm(a.unitsPerMm, writeContext(path, kHeader));
+    sidecar::checkLayout(a.layout, writeContext(path, kLayout));
+    std::uint64_t samples = a.layout.cells();
+    sidecar::checkSamples(a.samples, samples, writeContext(path, kSamples));
+    sidecar::checkVertexWeights(a.vertexWeights, samples, writeContext(path, kVertexWeights));
+    sidecar::checkTransfer(a.transfer, samples, writeContext(path, kTransfer));
+    sidecar::checkEnvironment(a.environment, samples, writeContext(path, kEnvironment));
+}
+
+void writeHeader(ChunkSink& sink, const TranslucentAsset& a) {
+    sink.writeString(a.name);
+    sink.writeF64(a.unitsPerMm);
+    sink.writeU64(a.layout.cells());
+    sink.writeU32(static_cast<std::uint32_t>(a.transfer.perBasis.size()));
+    sink.writeU32(static_cast<std::uint32_t>(a.vertexWeights.offsets.size() - 1));
+    sink.writeU64(meshTopologyHash(a.mesh));
+}
+
+void writeLayout(ChunkSink& sink, const ChartLayout& layout) {
+    sink.writeU32(layout.charts);
+    sink.writeU32(layout.log2Size);
+}
+
+// Structure of arrays (positions, normals, areas) compresses better than records.
+void writeSamples(ChunkSink& sink, const std::vector<SurfaceSample>& samples) {
+    std::vector<float> positions, normals, areas;
+    for (const SurfaceSample& s : samples) {
+        positions.insert(positions.end(), {s.position.x, s.position.y, s.position.z});
+        normals.insert(normals.end(), {s.normal.x, s.normal.y, s.normal.z});
+        areas.push_back(s.area);
+    }
+    sink.writeU64(samples.size());
+    writeFloatPlanes(sink, positions);
+    writeFloatPlanes(sink, normals);
+    writeFloatPlanes(sink, areas);
+}
+
+void writeVertexWeights(ChunkSink& sink, const VertexWeights& w) {
+    sink.writeU32(static_cast<std::uint32_t>(w.offsets.size() - 1));
+    sink.writeU64(w.samples.size());
+    sink.writeArray<std::uint32_t>(w.offsets);
+    writeRowDeltas<std::uint32_t>(sink, w.offsets, w.samples);
+    writeFloatPlanes(sink, w.weights);
+}
+
+void writeMatrix(ChunkSink& sink, const SparseMatrix& m) {
+    sink.writeU32(m.rows);
+    sink.writeU32(m.cols);
+    sink.writeU64(m.columns.size());
+    sink.writeArray<std::uint64_t>(m.rowOffsets);
+    writeRowDeltas<std::uint64_t>(sink, m.rowOffsets, m.columns);
+    writeFloatPlanes(sink, m.values);
+}
+
+void writeTransfer(ChunkSink& sink, const CompressedTransfer& t) {
+    sink.writeU32(static_cast<std::uint32_t>(t.perBasis.size()));
+    sink.writeF64(t.keepFraction);
+    sink.writeF64(t.energyFraction);
+    for (const SparseMatrix& m : t.perBasis) writeMatrix(sink, m);
+}
+
+void writeEnvironment(ChunkSink& sink, const EnvironmentTransfer& env, std::uint64_t samples) {
+    sink.writeU32(env.cubeFaceSize);
+    sink.writeU32(env.fresnelTerms);
+    sink.writeU64(sidecar::environmentRows(env, samples));
+    sink.writeU64(env.indices.size());
+    sink.writeArray<std::uint32_t>(env.offsets);
+    writeRowDeltas<std::uint32_t>(sink, env.offsets, env.indices);
+    writeFloatPlanes(sink, env.values);
+}
+
+}  // namespace
+
+void writeSidecar(const std::filesystem::path& path, const TranslucentAsset& a,
+                  const SidecarWriteOptions& options) {
+    validate(path, a);
+    const ChunkProducer chunks[] = {
+        {kHeader, ChunkCodec::Raw, true, [&](ChunkSink& s) { writeHeader(s, a); }},
+        {kLayout, ChunkCodec::Raw, true, [&](ChunkSink& s) { writeLayout(s, a.layout); }},
+        {kSamples, ChunkCodec::Zstd, true, [&](ChunkSink& s) { writeSamples(s, a.samples); }},
+        {kVertexWeights, ChunkCodec::Zstd, true, [&](ChunkSink& s) { writeVertexWeights(s, a.vertexWeights); }},
+        {kTransfer, ChunkCodec::Zstd, true, [&](ChunkSink& s) { writeTransfer(s, a.transfer); }},
+        {kEnvironment, ChunkCodec::Zstd, true,
+         [&](ChunkSink& s) { writeEnvironment(s, a.environment, a.layout.cells()); }},
+    };
+    writeChunkedFile(path, kSidecarKind, chunks, {options.zstdLevel});
+}
+
+}  // namespace opal

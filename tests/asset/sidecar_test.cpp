@@ -1,0 +1,326 @@
+// The sidecar: bit-exact round trip, determinism, and rejection of every truncation, every
+// byte flip and every inconsistency, each naming the file and (where there is one) chunk.
+// Byte offsets inside chunks below come from the layout documented in SIDECAR.md.
+#include "schema/asset/sidecar.h"
+
+#include "schema/asset/chunked_file.h"
+#include "schema/error.h"
+#include "tests/asset/synthetic_asset.h"
+#include "tests/asset/test_files.h"
+
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cstring>
+#include <functional>
+
+namespace opal {
+namespace {
+
+using test::TempDir;
+
+std::vector<std::uint32_t> bits(std::span<const float> v) {
+    std::vector<std::uint32_t> b;
+    for (float x : v) b.push_back(std::bit_cast<std::uint32_t>(x));
+    return b;
+}
+
+std::vector<std::uint32_t> bits(std::span<const SurfaceSample> samples) {
+    std::vector<float> f;
+    for (const SurfaceSample& s : samples)
+        f.insert(f.end(), {s.position.x, s.position.y, s.position.z, s.normal.x, s.normal.y, s.normal.z, s.area});
+    return bits(f);
+}
+
+void expectSameSidecarParts(const TranslucentAsset& a, const TranslucentAsset& b) {
+    EXPECT_EQ(a.layout.charts, b.layout.charts);
+    EXPECT_EQ(a.layout.log2Size, b.layout.log2Size);
+    EXPECT_EQ(bits(a.samples), bits(b.samples));
+    EXPECT_EQ(a.vertexWeights.offsets, b.vertexWeights.offsets);
+    EXPECT_EQ(a.vertexWeights.samples, b.vertexWeights.samples);
+    EXPECT_EQ(bits(a.vertexWeights.weights), bits(b.vertexWeights.weights));
+    EXPECT_EQ(a.transfer.keepFraction, b.transfer.keepFraction);
+    EXPECT_EQ(a.transfer.energyFraction, b.transfer.energyFraction);
+    ASSERT_EQ(a.transfer.perBasis.size(), b.transfer.perBasis.size());
+    for (std::size_t k = 0; k < a.transfer.perBasis.size(); ++k) {
+        const SparseMatrix &x = a.transfer.perBasis[k], &y = b.transfer.perBasis[k];
+        EXPECT_EQ(x.rows, y.rows);
+        EXPECT_EQ(x.cols, y.cols);
+        EXPECT_EQ(x.rowOffsets, y.rowOffsets);
+        EXPECT_EQ(x.columns, y.columns);
+        EXPECT_EQ(bits(x.values), bits(y.values));
+    }
+    EXPECT_EQ(a.environment.cubeFaceSize, b.environment.cubeFaceSize);
+    EXPECT_EQ(a.environment.fresnelTerms, b.environment.fresnelTerms);
+    EXPECT_EQ(a.environment.offsets, b.environment.offsets);
+    EXPECT_EQ(a.environment.indices, b.environment.indices);
+    EXPECT_EQ(bits(a.environment.values), bits(b.environment.values));
+}
+
+// The message of the opal::Error `f` throws; fails the test on no or another exception.
+std::string errorOf(const std::function<void()>& f) {
+    try {
+        f();
+    } catch (const Error& e) {
+        return e.what();
+    } catch (const std::exception& e) {
+        return std::string("NOT AN opal::Error: ") + e.what();
+    }
+    return "NO ERROR";
+}
+
+void expectContains(const std::string& message, std::initializer_list<std::string> parts) {
+    for (const std::string& p : parts) EXPECT_NE(message.find(p), std::string::npos) << message << "\n  lacks: " << p;
+}
+
+// A sidecar's chunks with their raw bytes, to be edited and written back through the
+// container API with valid checksums: content errors only the sidecar rules can catch.
+struct RawChunk {
+    ChunkInfo info;
+    std::vector<std::byte> bytes;
+};
+
+std::vector<RawChunk> rawChunks(const std::filesystem::path& path) {
+    ChunkedFileReader reader(path, kSidecarKind);
+    std::vector<RawChunk> chunks;
+    for (const ChunkInfo& info : reader.chunks()) {
+        ChunkSource source = reader.open(info.tag);
+        std::vector<std::byte> bytes(source.remaining());
+        source.read(bytes);
+        source.finish();
+        chunks.push_back({info, std::move(bytes)});
+    }
+    return chunks;
+}
+
+void writeRawChunks(const std::filesystem::path& path, const std::vector<RawChunk>& chunks) {
+    std::vector<ChunkProducer> producers;
+    for (const RawChunk& c : chunks)
+        producers.push_back({c.info.tag, c.info.codec, c.info.required, [&c](ChunkSink& s) { s.write(c.bytes); }});
+    writeChunkedFile(path, kSidecarKind, producers);
+}
+
+RawChunk& chunk(std::vector<RawChunk>& chunks, ChunkTag tag) {
+    for (RawChunk& c : chunks)
+        if (c.info.tag == tag) return c;
+    throw std::logic_error("no chunk " + tag.str());
+}
+
+void putBytes(std::vector<std::byte>& b, std::size_t at, std::uint32_t v) {
+    for (int i = 0; i < 4; ++i) b[at + i] = std::byte((v >> (8 * i)) & 0xFF);
+}
+
+// Float f as value `index` of a byte-plane array of `count` floats starting at `at`.
+void putPlaneFloat(std::vector<std::byte>& b, std::size_t at, std::size_t count, std::size_t index, float f) {
+    auto u = std::bit_cast<std::uint32_t>(f);
+    for (std::size_t k = 0; k < 4; ++k) b[at + k * count + index] = std::byte((u >> (8 * k)) & 0xFF);
+}
+
+TEST(Sidecar, RoundTripIsBitExact) {
+    TempDir dir;
+    TranslucentAsset original = test::syntheticAsset();
+    writeSidecar(dir / "cube.opal", original);
+    TranslucentAsset loaded;
+    SidecarHeader header = readSidecar(dir / "cube.opal", loaded);
+    expectSameSidecarParts(original, loaded);
+    EXPECT_EQ(header.name, "syntheticCube");
+    EXPECT_EQ(header.unitsPerMm, 0.1);
+    EXPECT_EQ(header.sampleCount, 32u);
+    EXPECT_EQ(header.basisCount, 3u);
+    EXPECT_EQ(header.vertexCount, 12u);
+    EXPECT_EQ(header.meshTopologyHash, meshTopologyHash(original.mesh));
+    EXPECT_EQ(dir.entries(), std::vector<std::string>{"cube.opal"});
+}
+
+TEST(Sidecar, EnvironmentMayBeAbsent) {
+    TempDir dir;
+    TranslucentAsset original = test::syntheticAsset(2);
+    original.environment.offsets.clear();
+    original.environment.indices.clear();
+    original.environment.values.clear();
+    writeSidecar(dir / "noenv.opal", original);
+    TranslucentAsset loaded;
+    readSidecar(dir / "noenv.opal", loaded);
+    expectSameSidecarParts(original, loaded);
+}
+
+TEST(Sidecar, TwoWritesAreByteIdentical) {
+    TempDir dir;
+    TranslucentAsset a = test::syntheticAsset();
+    writeSidecar(dir / "a.opal", a);
+    writeSidecar(dir / "b.opal", a);
+    EXPECT_EQ(test::readBytes(dir / "a.opal"), test::readBytes(dir / "b.opal"));
+}
+
+// Shortening the file one byte at a time visits every proper prefix of it.
+TEST(Sidecar, EveryTruncationIsRejected) {
+    TempDir dir;
+    auto path = dir / "cut.opal";
+    writeSidecar(path, test::syntheticAsset());
+    const std::size_t size = std::filesystem::file_size(path);
+    int failures = 0;
+    for (std::size_t length = size; length-- > 0;) {
+        std::filesystem::resize_file(path, length);
+        TranslucentAsset asset;
+        std::string message = errorOf([&] { readSidecar(path, asset); });
+        if (message.find("cut.opal") == std::string::npos || message.find("NOT AN") != std::string::npos) {
+            if (++failures < 5) ADD_FAILURE() << "length " << length << ": " << message;
+        }
+        if (!asset.samples.empty()) ADD_FAILURE() << "length " << length << ": asset modified";
+    }
+    EXPECT_EQ(failures, 0);
+}
+
+TEST(Sidecar, EveryByteFlipIsRejectedNamingTheChunk) {
+    TempDir dir;
+    auto path = dir / "flip.opal";
+    writeSidecar(path, test::syntheticAsset());
+    const std::vector<std::byte> whole = test::readBytes(path);
+    ASSERT_LT(whole.size(), 16000u);  // keeps the loop fast
+    ChunkedFileReader pristine(path, kSidecarKind);
+    std::vector<ChunkInfo> chunks(pristine.chunks().begin(), pristine.chunks().end());
+    int failures = 0;
+    for (std::size_t at = 0; at < whole.size(); ++at) {
+        test::patchByte(path, at, whole[at] ^ std::byte{0xFF});
+        TranslucentAsset asset;
+        std::string message = errorOf([&] { readSidecar(path, asset); });
+        test::patchByte(path, at, whole[at]);
+        std::string expected = "flip.opal";
+        for (const ChunkInfo& c : chunks)
+            if (at >= c.offset && at < c.offset + c.storedSize) expected = "flip.opal: chunk '" + c.tag.str() + "'";
+        if (message.find(expected) == std::string::npos || message.find("NOT AN") != std::string::npos) {
+            if (++failures < 5) ADD_FAILURE() << "byte " << at << ": " << message << "\n  expected: " << expected;
+        }
+    }
+    EXPECT_EQ(failures, 0);
+    EXPECT_EQ(test::readBytes(path), whole);
+}
+
+TEST(Sidecar, NewerMajorVersionIsRejectedNewerMinorAccepted) {
+    TempDir dir;
+    auto path = dir / "v.opal";
+    writeSidecar(path, test::syntheticAsset());
+    std::vector<std::byte> file = test::readBytes(path);
+    test::putU16(file, 14, 7);  // minor 1.7
+    test::resealHeader(file);
+    test::writeBytes(path, file);
+    TranslucentAsset asset;
+    readSidecar(path, asset);
+    test::putU16(file, 12, 2);  // major 2.7
+    test::resealHeader(file);
+    test::writeBytes(path, file);
+    expectContains(errorOf([&] { readSidecar(path, asset); }), {"v.opal", "version 2.7 is newer", "update Opal"});
+}
+
+struct ContentCase {
+    ChunkTag tag;  // edited; the error names this chunk unless `reported` is set
+
+    std::function<void(std::vector<std::byte>&, const TranslucentAsset&)> edit;
+    std::string problem;
+    ChunkTag reported{};
+};
+
+TEST(Sidecar, ContentInconsistenciesAreRejectedNamingTheChunk) {
+    const std::size_t n = 32;  // samples
+    const std::vector<ContentCase> cases = {
+        {"CHRT", [](auto& b, auto&) { putBytes(b, 0, 3); }, "layout has 48 cells, the header says 32 samples"},
+        {"HEAD", [](auto& b, auto&) { putBytes(b, 4 + 13 + 8 + 8, 4); }, "K = 3 matrices, the header says 4", "TRNS"},
+        {"SMPL", [&](auto& b, auto&) { putPlaneFloat(b, 8 + 12 * n, 3 * n, 0, 2.0f); }, "sample 0: normal has length 2"},
+        {"SMPL", [&](auto& b, auto&) { putPlaneFloat(b, 8 + 24 * n, n, 5, 0.0f); }, "sample 5: area 0 is not positive"},
+        {"VWGT", [](auto& b, auto&) { putBytes(b, 4 + 8 + 13 * 4, 32); }, "vertex samples row 0: index 32 >= 32"},
+        {"VWGT", [](auto& b, auto&) { putBytes(b, 4 + 8 + 4, 0xFFFF); }, "vertex offsets decrease at row 1"},
+        {"TRNS", [&](auto& b, auto&) { putBytes(b, 20 + 16 + (n + 1) * 8, 32); }, ": index 32 >= 32"},
+        {"TRNS",
+         [&](auto& b, const TranslucentAsset& a) {
+             std::size_t nnz = a.transfer.perBasis[0].values.size();
+             putPlaneFloat(b, 20 + 16 + (n + 1) * 8 + nnz * 4, nnz, 0, std::nanf(""));
+         },
+         "matrix 0 values[0] = nan is not finite"},
+        {"TRNS", [&](auto& b, auto&) { putBytes(b, 24, 31); }, "matrix 0: 32 x 31, expected 32 x 32"},
+        {"ENVT", [&](auto& b, auto&) { putBytes(b, 24 + (2 * n + 1) * 4, 24); }, ": index 24 >= 24"},
+        {"ENVT", [](auto& b, auto&) { putBytes(b, 0, 3); }, "cube face size 3 is not a power of two"},
+    };
+    TempDir dir;
+    TranslucentAsset original = test::syntheticAsset();
+    writeSidecar(dir / "good.opal", original);
+    for (const ContentCase& c : cases) {
+        std::vector<RawChunk> chunks = rawChunks(dir / "good.opal");
+        c.edit(chunk(chunks, c.tag).bytes, original);
+        writeRawChunks(dir / "bad.opal", chunks);
+        TranslucentAsset asset;
+        expectContains(errorOf([&] { readSidecar(dir / "bad.opal", asset); }),
+                       {"bad.opal: chunk '" + (c.reported == ChunkTag{} ? c.tag : c.reported).str() + "'", c.problem});
+    }
+}
+
+TEST(Sidecar, MissingAndUnknownRequiredChunksAreRejected) {
+    TempDir dir;
+    writeSidecar(dir / "good.opal", test::syntheticAsset());
+    std::vector<RawChunk> chunks = rawChunks(dir / "good.opal");
+    TranslucentAsset asset;
+
+    std::vector<RawChunk> withoutEnv(chunks.begin(), chunks.end() - 1);
+    writeRawChunks(dir / "bad.opal", withoutEnv);
+    expectContains(errorOf([&] { readSidecar(dir / "bad.opal", asset); }), {"bad.opal", "missing chunk 'ENVT'"});
+
+    std::vector<RawChunk> withOptional = chunks;
+    withOptional.push_back({{"XTRA", ChunkCodec::Raw, false}, {std::byte{1}}});
+    writeRawChunks(dir / "bad.opal", withOptional);
+    readSidecar(dir / "bad.opal", asset);  // unknown optional chunks are skipped
+
+    withOptional.back().info.required = true;
+    writeRawChunks(dir / "bad.opal", withOptional);
+    expectContains(errorOf([&] { readSidecar(dir / "bad.opal", asset); }), {"bad.opal: chunk 'XTRA'", "required"});
+}
+
+TEST(Sidecar, WriterRefusesInconsistentAssetsAndKeepsThePreviousFile) {
+    TempDir dir;
+    auto path = dir / "keep.opal";
+    writeSidecar(path, test::syntheticAsset());
+    const std::vector<std::byte> before = test::readBytes(path);
+
+    TranslucentAsset bad = test::syntheticAsset();
+    bad.transfer.perBasis[1].columns.back() = 32;
+    expectContains(errorOf([&] { writeSidecar(path, bad); }), {"keep.opal: chunk 'TRNS'", "matrix 1 columns", ">= 32"});
+    bad = test::syntheticAsset();
+    bad.samples.pop_back();
+    expectContains(errorOf([&] { writeSidecar(path, bad); }), {"keep.opal: chunk 'SMPL'", "31 samples"});
+    bad = test::syntheticAsset();
+    bad.vertexWeights.weights[0] += 0.5f;
+    expectContains(errorOf([&] { writeSidecar(path, bad); }), {"keep.opal: chunk 'VWGT'", "vertex 0: weights sum"});
+    bad = test::syntheticAsset();
+    bad.environment.offsets.pop_back();
+    expectContains(errorOf([&] { writeSidecar(path, bad); }), {"keep.opal: chunk 'ENVT'", "offsets for 64 rows"});
+
+    EXPECT_EQ(test::readBytes(path), before);
+    EXPECT_EQ(dir.entries(), std::vector<std::string>{"keep.opal"});
+}
+
+TEST(Sidecar, HeaderIsCheckedAgainstTheLayer) {
+    TempDir dir;
+    TranslucentAsset a = test::syntheticAsset();
+    const std::size_t L = 2;
+    a.basis = ProfileBasis({0.0, 1.0}, {0.5, 0.5}, std::vector<double>(3 * L, 0.1), {3.0, 2.0, 1.0},
+                           EditableRange::coveringPresets());
+    writeSidecar(dir / "m.opal", a);
+    TranslucentAsset layer = a;
+    SidecarHeader header = readSidecar(dir / "m.opal", layer);
+    checkSidecarMatches(header, a, dir / "m.opal");
+
+    TranslucentAsset other = a;
+    other.name = "otherAsset";
+    expectContains(errorOf([&] { checkSidecarMatches(header, other, dir / "m.opal"); }),
+                   {"m.opal: chunk 'HEAD'", "'otherAsset'"});
+    other = a;
+    other.mesh.faceVertexIndices[0] = 5;
+    expectContains(errorOf([&] { checkSidecarMatches(header, other, dir / "m.opal"); }), {"faces differ"});
+    other = a;
+    other.mesh.points.pop_back();
+    expectContains(errorOf([&] { checkSidecarMatches(header, other, dir / "m.opal"); }), {"12 vertices"});
+    other = a;
+    other.basis = ProfileBasis();
+    expectContains(errorOf([&] { checkSidecarMatches(header, other, dir / "m.opal"); }), {"K = 3", "0 functions"});
+}
+
+}  // namespace
+}  // namespace opal
