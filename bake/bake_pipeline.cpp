@@ -1,0 +1,234 @@
+#include "bake/bake_pipeline.h"
+
+#include "bake/bake_report.h"
+#include "bake/chart_parameterization.h"
+#include "bake/mesh_import.h"
+#include "bake/mesh_validation.h"
+#include "bake/procedural_mesh.h"
+#include "bake/random.h"
+#include "bake/sample_count.h"
+#include "bake/subdivision.h"
+#include "bake/surface_sampler.h"
+#include "bake/vertex_weights.h"
+#include "schema/asset/asset_layer.h"
+#include "schema/asset/sidecar.h"
+#include "schema/asset/transfer_apply.h"
+
+#include <Imath/ImathBox.h>
+
+#include <tbb/parallel_for.h>
+
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+
+namespace opal {
+
+namespace {
+
+constexpr std::string_view kBuiltinCandle = "builtin:candle";
+
+// Times each stage for the report.
+class StageClock {
+public:
+    explicit StageClock(BakeReport* report) : report_(report), start_(Clock::now()) {}
+    void lap(std::string stage) {
+        const auto now = Clock::now();
+        if (report_) report_->seconds.emplace_back(std::move(stage), std::chrono::duration<double>(now - start_).count());
+        start_ = now;
+    }
+
+private:
+    using Clock = std::chrono::steady_clock;
+    BakeReport* report_;
+    Clock::time_point start_;
+};
+
+ControlMesh loadControlMesh(const BakeOptions& options, std::vector<std::string>* warnings) {
+    if (options.input == kBuiltinCandle) return makeCandle();
+    ImportedMesh imported = importMesh(options.input);
+    warnings->insert(warnings->end(), imported.warnings.begin(), imported.warnings.end());
+    return std::move(imported.mesh);
+}
+
+Imath::Box3f bounds(const RenderMesh& mesh) {
+    Imath::Box3f box;
+    for (const Imath::V3f& p : mesh.points) box.extendBy(p);
+    return box;
+}
+
+Material defaultMaterial(const BakeOptions& options, const EditableRange& range, std::vector<std::string>* warnings) {
+    const std::optional<Material> preset = findPreset(options.material);
+    if (!preset) {
+        std::string names;
+        for (const NamedMaterial& m : jensenPresets()) names += (names.empty() ? "" : ", ") + std::string(m.name);
+        throw Error("--material: unknown preset '" + options.material + "' (one of " + names + ")");
+    }
+    return range.clamp(*preset, warnings);
+}
+
+// The basis reaches across the whole object: r_max is the bounding-box diagonal in mm.
+ProfileBasis fitBasis(const BakeOptions& options, const EditableRange& range, const RenderMesh& mesh) {
+    const Imath::Box3f box = bounds(mesh);
+    ProfileBasisSettings settings;
+    settings.K = options.basisCount;
+    settings.range = range;
+    settings.rMax = double((box.max - box.min).length()) / options.unitsPerMm;
+    settings.seed = options.seed;
+    return ProfileBasis::fit(settings);
+}
+
+std::string assetName(const std::string& input) {
+    if (input == kBuiltinCandle) return "candle";
+    return std::filesystem::path(input).stem().string();
+}
+
+}  // namespace
+
+TranslucentAsset bakeAsset(const BakeOptions& options, ProgressSink* progress, const CancelToken& cancel,
+                           BakeReport* report) {
+    BakeReport local;
+    BakeReport& r = report ? *report : local;
+    StageClock clock(&r);
+    if (!(options.unitsPerMm > 0.0) || !std::isfinite(options.unitsPerMm))
+        throw Error("--units-per-mm must be a positive number");
+
+    TranslucentAsset asset;
+    asset.name = assetName(options.input);
+    asset.unitsPerMm = options.unitsPerMm;
+    asset.range = options.range.value_or(EditableRange::coveringPresets());
+    asset.range.validate("editable range");
+    asset.defaultMaterial = defaultMaterial(options, asset.range, &r.warnings);
+
+    ControlMesh control = loadControlMesh(options, &r.warnings);
+    const ValidationReport validation = validateAndRepair(control);
+    r.warnings.insert(r.warnings.end(), validation.warnings.begin(), validation.warnings.end());
+    clock.lap("import");
+    cancel.throwIfRequested();
+
+    SubdivisionOptions subdivision;
+    subdivision.scheme = resolveSubdivisionScheme(control, parseSubdivisionScheme(options.scheme));
+    subdivision.level = int(options.level);
+    {
+        StageScope stage(progress, "subdivide", 1);
+        asset.mesh = subdivide(control, subdivision);
+    }
+    clock.lap("subdivide");
+    cancel.throwIfRequested();
+
+    asset.layout = chartLayoutForSampleCount(options.samples);
+    {
+        StageScope stage(progress, "sample + parameterize", 3);
+        SurfaceSampling sampling = sampleSurface(asset.mesh, options.samples, SamplingOptions{options.seed, 5});
+        stage.advance(1);
+        std::vector<Imath::V3f> positions;
+        positions.reserve(sampling.samples.size());
+        for (const SurfaceSample& s : sampling.samples) positions.push_back(s.position);
+        reorderSamples(sampling, parameterizeCharts(positions, asset.layout));
+        asset.samples = std::move(sampling.samples);
+        stage.advance(1);
+        asset.vertexWeights = computeVertexWeights(asset.mesh, asset.samples);
+    }
+    clock.lap("sample");
+    cancel.throwIfRequested();
+
+    {
+        StageScope stage(progress, "fit profile basis", 1);
+        asset.basis = fitBasis(options, asset.range, asset.mesh);
+    }
+    clock.lap("basis");
+    cancel.throwIfRequested();
+
+    asset.transfer = buildTransfer(asset.samples, asset.layout, asset.unitsPerMm, asset.basis, options.transfer,
+                                   progress, cancel, &r.transfer);
+    clock.lap("transfer");
+
+    asset.environment = buildEnvironmentTransfer(asset.mesh, asset.samples, options.visibility, progress, cancel);
+    clock.lap("visibility");
+
+    asset.bake.source = options.input;
+    asset.bake.scheme = std::string(subdivisionSchemeName(subdivision.scheme));
+    asset.bake.level = options.level;
+    asset.bake.seed = options.seed;
+    asset.bake.envTerms = options.visibility.terms;
+
+    {
+        StageScope stage(progress, "measure transfer error", 1);
+        r.transferRelRmse = measureTransferError(asset, options.seed);
+    }
+    clock.lap("measure");
+
+    r.samples = asset.samples.size();
+    r.charts = asset.layout.charts;
+    r.grid = asset.layout.size();
+    r.renderVertices = asset.mesh.points.size();
+    r.peakRssBytes = peakRssBytes();
+    return asset;
+}
+
+void writeBakedAsset(const std::filesystem::path& stem, const TranslucentAsset& asset, BakeReport* report) {
+    std::filesystem::path usda = stem, sidecar = stem;
+    usda += ".usda";
+    sidecar += ".opal";
+    writeSidecar(sidecar, asset);
+    writeAssetLayer(usda, asset, sidecar.filename().string());
+    if (report) {
+        report->sidecarBytes = std::filesystem::file_size(sidecar);
+        report->peakRssBytes = peakRssBytes();
+    }
+}
+
+double measureTransferError(const TranslucentAsset& asset, std::uint64_t seed) {
+    const std::size_t n = asset.samples.size();
+    Imath::Box3f box;
+    for (const SurfaceSample& s : asset.samples) box.extendBy(s.position);
+    const Imath::V3f light = box.center() + Imath::V3f(0.6f, 0.9f, 0.5f) * (box.max - box.min).length();
+    std::vector<float> irradiance(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const Imath::V3f d = light - asset.samples[i].position;
+        irradiance[i] = std::max(0.0f, asset.samples[i].normal.dot(d.normalized())) / d.length2();
+    }
+
+    // Output samples to compare at: a seeded subset of at least 512 (all when fewer).
+    std::vector<std::size_t> subset;
+    const std::size_t wanted = std::min<std::size_t>(n, 512);
+    Random random(seed, 0x7e57);
+    for (std::size_t i = 0; i < n; ++i)
+        if (random.uniformDouble() * double(n - i) < double(wanted - subset.size())) subset.push_back(i);
+
+    const BasisLookup lookup(asset.basis);
+    const std::array<std::vector<double>, 3> s = asset.basis.project(asset.defaultMaterial);
+    std::array<std::vector<float>, 3> compressed;
+    for (int c = 0; c < 3; ++c) compressed[c] = applyTransfer(asset.transfer, asset.layout, s[c], irradiance);
+
+    // The exact sum_k s_k sum_i b_k(|x_o - x_i|) A_i E_i at each output of the subset.
+    const int K = asset.basis.K();
+    const double toMm = 1.0 / asset.unitsPerMm;
+    std::vector<std::array<double, 3>> exact(subset.size());
+    tbb::parallel_for(std::size_t(0), subset.size(), [&](std::size_t q) {
+        const std::size_t o = subset[q];
+        std::vector<float> b(static_cast<std::size_t>(K));
+        std::array<double, 3> sum{0.0, 0.0, 0.0};
+        for (std::size_t i = 0; i < n; ++i) {
+            lookup.evaluate(float((asset.samples[i].position - asset.samples[o].position).length() * toMm), b.data());
+            const double weight = asset.samples[i].area * toMm * toMm * irradiance[i];
+            for (int c = 0; c < 3; ++c) {
+                double profile = 0.0;
+                for (int k = 0; k < K; ++k) profile += s[c][std::size_t(k)] * b[std::size_t(k)];
+                sum[c] += profile * weight;
+            }
+        }
+        exact[q] = sum;
+    });
+    double errorSq = 0.0, exactSq = 0.0;
+    for (std::size_t q = 0; q < subset.size(); ++q)
+        for (int c = 0; c < 3; ++c) {
+            const double d = compressed[c][subset[q]] - exact[q][c];
+            errorSq += d * d;
+            exactSq += exact[q][c] * exact[q][c];
+        }
+    return exactSq > 0.0 ? std::sqrt(errorSq / exactSq) : 0.0;
+}
+
+}  // namespace opal

@@ -1,0 +1,59 @@
+// The whole bake, stage by stage (the opal-bake issue; DESIGN.md sections 4-6, 8):
+// import -> validate/repair -> subdivide -> sample -> parameterize -> fit basis ->
+// transfer (two-step compression) -> environment visibility -> (write).
+#pragma once
+
+#include "bake/environment_visibility.h"
+#include "bake/progress.h"
+#include "bake/transfer_builder.h"
+#include "schema/asset/translucent_asset.h"
+
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace opal {
+
+struct BakeOptions {
+    std::string input;                // a mesh file, or "builtin:candle"
+    std::string scheme = "auto";      // auto | catmullClark | loop
+    std::uint32_t level = 2;          // uniform subdivision level
+    std::uint64_t samples = 16384;    // N = M x 4^n
+    double unitsPerMm = 1.0;          // scene units per millimetre
+    std::optional<EditableRange> range;  // default: covering the ten presets
+    std::string material = "marble";  // the asset's default material: a preset name
+    int basisCount = 12;              // K
+    TransferSettings transfer;
+    VisibilitySettings visibility;
+    std::uint64_t seed = 1;
+};
+
+struct BakeReport {
+    std::uint64_t samples = 0;
+    std::uint32_t charts = 0;
+    std::uint32_t grid = 0;  // 2^n
+    std::uint64_t renderVertices = 0;
+    TransferStats transfer;
+    std::uint64_t sidecarBytes = 0;
+    double transferRelRmse = 0.0;
+    std::vector<std::pair<std::string, double>> seconds;  // per stage, in order
+    std::uint64_t peakRssBytes = 0;
+    std::vector<std::string> warnings;
+};
+
+// Runs every stage up to a complete in-memory asset. Throws opal::Error (or Cancelled).
+TranslucentAsset bakeAsset(const BakeOptions& options, ProgressSink* progress, const CancelToken& cancel,
+                           BakeReport* report);
+
+// Writes STEM.usda and STEM.opal, each atomically (temporary file + rename); the sidecar
+// first, so a reader that sees the new layer also sees its sidecar.
+void writeBakedAsset(const std::filesystem::path& stem, const TranslucentAsset& asset, BakeReport* report);
+
+// compressed vs exact transfer: RMS over >= 512 random output samples and RGB of the
+// difference between sum_k s_k (T_k E) computed through the compressed transfer and
+// exactly, for a point light's irradiance, relative to the exact RMS.
+double measureTransferError(const TranslucentAsset& asset, std::uint64_t seed);
+
+}  // namespace opal

@@ -1,0 +1,41 @@
+// Step 6 of the bake (DESIGN.md section 5; the paper's "Precomputing and Compression of
+// Scatter Transmission"): the scattering transfer T_k[o][i] = b_k(|x_o - x_i|) A_i for all
+// basis functions k, computed row by row and compressed in two steps without ever holding
+// the dense N x N matrix:
+//   step 1 (light dimension, w0): each row of T_k, laid out on the chart grid, is Haar
+//          transformed and its largest `keepFraction` coefficients kept;
+//   step 2 (spatial dimension, w1): every column of the retained matrix is transformed
+//          along the output dimension with CDF 9/7 and the coefficients that carry
+//          `energyFraction` of the matrix energy are kept.
+// The result is ^{w1}T_k^{w0^-1}, one sparse matrix per k (rows: 9/7 coefficients of the
+// output, columns: Haar coefficients of the light).
+#pragma once
+
+#include "bake/progress.h"
+#include "schema/asset/translucent_asset.h"
+
+#include <cstdint>
+#include <span>
+
+namespace opal {
+
+struct TransferSettings {
+    double keepFraction = 0.01;    // step 1: fraction of each row's Haar coefficients kept
+    double energyFraction = 0.97;  // step 2: fraction of the 9/7 energy kept
+};
+
+struct TransferStats {
+    std::uint64_t rawBytes = 0;    // N x N x K float32
+    std::uint64_t step1Bytes = 0;  // retained entries after step 1 (index + value)
+    std::uint64_t step2Bytes = 0;  // retained entries after step 2 (index + value)
+    std::uint64_t step2NonZeros = 0;
+    double energyKept = 1.0;       // step 2 energy kept, over all k
+};
+
+// samples are in grid order (layout.cells() of them), positions in scene units.
+CompressedTransfer buildTransfer(std::span<const SurfaceSample> samples, const ChartLayout& layout,
+                                 double unitsPerMm, const ProfileBasis& basis,
+                                 const TransferSettings& settings, ProgressSink* progress,
+                                 const CancelToken& cancel, TransferStats* stats);
+
+}  // namespace opal
