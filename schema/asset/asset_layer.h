@@ -1,0 +1,33 @@
+// The USDA half of a baked asset (DESIGN.md section 8): a root Mesh prim with the render
+// mesh and the applied OpalSubsurfaceAPI (schema/usd/opal.usda): default material, units,
+// editable range, the PCA profile basis, and the asset path of the sidecar; bake settings
+// in the prim's customData. readAsset() reads both halves and checks they belong together.
+#pragma once
+
+#include "schema/asset/translucent_asset.h"
+#include "schema/usd/usda_layer.h"
+
+#include <filesystem>
+#include <string>
+
+namespace opal {
+
+inline constexpr std::string_view kSubsurfaceApi = "OpalSubsurfaceAPI";
+
+// `sidecarAssetPath` is written as given (relative to the layer, e.g. "./candle.opal").
+usda::Layer assetToLayer(const TranslucentAsset& asset, const std::string& sidecarAssetPath);
+
+// Writes the layer atomically.
+void writeAssetLayer(const std::filesystem::path& usdaPath, const TranslucentAsset& asset,
+                     const std::string& sidecarAssetPath);
+
+// Fills the USDA-side fields of `asset` from a prim with OpalSubsurfaceAPI (mesh, material,
+// units, range, basis, bake settings) and returns the sidecar asset path as authored.
+// Throws opal::Error with file:line:column of the offending attribute.
+std::string primToAsset(const usda::Prim& prim, TranslucentAsset& asset);
+
+// Reads `usdaPath` (its default prim, else its first root prim), then the sidecar it names
+// (resolved relative to the layer's directory), validating both and their agreement.
+TranslucentAsset readAsset(const std::filesystem::path& usdaPath);
+
+}  // namespace opal
