@@ -1,0 +1,70 @@
+#include "schema/scatter/dipole.h"
+
+#include "schema/error.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+namespace opal {
+
+namespace {
+
+// A = (1 + F_dr) / (1 - F_dr): the boundary mismatch term (DESIGN.md section 2).
+double boundaryMismatch(double eta) {
+    const double fdr = fresnelDiffuseReflectance(eta);
+    return (1.0 + fdr) / (1.0 - fdr);
+}
+
+// One pole of the dipole: z (sigma_tr + 1/d) e^{-sigma_tr d} / d^2 with d = sqrt(r^2 + z^2).
+double poleTerm(double r, double z, double sigmaTr) {
+    const double d = std::hypot(r, z);
+    return z * (sigmaTr + 1.0 / d) * std::exp(-sigmaTr * d) / (d * d);
+}
+
+}  // namespace
+
+// DESIGN.md section 2: F_dr(eta), Egan and Hilgeman's polynomial fit.
+double fresnelDiffuseReflectance(double eta) {
+    return -1.440 / (eta * eta) + 0.710 / eta + 0.668 + 0.0636 * eta;
+}
+
+// DESIGN.md section 2 (Jensen et al. 2001, eq. 5 with the corrected sigma_t' and z_v):
+// R_d(r) = alpha'/(4 pi) [z_r (sigma_tr + 1/d_r) e^{-sigma_tr d_r}/d_r^2
+//                       + z_v (sigma_tr + 1/d_v) e^{-sigma_tr d_v}/d_v^2].
+double dipoleProfile(double r, const DipoleCoefficients& c) {
+    const double sigmaTPrime = c.sigmaSPrime + c.sigmaA;
+    const double alphaPrime = c.sigmaSPrime / sigmaTPrime;
+    const double sigmaTr = std::sqrt(3.0 * c.sigmaA * sigmaTPrime);
+    const double zr = 1.0 / sigmaTPrime;
+    const double zv = zr * (1.0 + 4.0 * boundaryMismatch(c.eta) / 3.0);
+    return alphaPrime / (4.0 * std::numbers::pi) *
+           (poleTerm(r, zr, sigmaTr) + poleTerm(r, zv, sigmaTr));
+}
+
+// DESIGN.md section 2 "Check": integral_0^inf R_d(r) 2 pi r dr
+//   = (alpha'/2) (1 + e^{-(4/3) A sqrt(3(1-alpha'))}) e^{-sqrt(3(1-alpha'))}.
+double dipoleTotalReflectance(double alphaPrime, double eta) {
+    const double s = std::sqrt(3.0 * (1.0 - alphaPrime));
+    const double a = boundaryMismatch(eta);
+    return 0.5 * alphaPrime * (1.0 + std::exp(-4.0 / 3.0 * a * s)) * std::exp(-s);
+}
+
+// Unpolarized Fresnel transmittance 1 - (r_s^2 + r_p^2)/2 from index 1 into index eta,
+// with cos(theta_t) from Snell's law (total internal reflection when eta < 1).
+double fresnelTransmittance(double eta, double cosTheta) {
+    if (!(eta > 0.0) || !std::isfinite(eta) || std::isnan(cosTheta))
+        throw Error("fresnelTransmittance: eta must be positive and finite and cos(theta) a number, got eta = " +
+                    std::to_string(eta) + ", cos(theta) = " + std::to_string(cosTheta));
+    if (eta == 1.0) return 1.0;
+    const double cosI = std::clamp(cosTheta, 0.0, 1.0);
+    const double sin2T = (1.0 - cosI * cosI) / (eta * eta);
+    if (sin2T >= 1.0) return 0.0;
+    const double cosT = std::sqrt(1.0 - sin2T);
+    const double rs = (cosI - eta * cosT) / (cosI + eta * cosT);
+    const double rp = (eta * cosI - cosT) / (eta * cosI + cosT);
+    return 1.0 - 0.5 * (rs * rs + rp * rp);
+}
+
+}  // namespace opal

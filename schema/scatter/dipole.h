@@ -15,7 +15,8 @@ struct DipoleCoefficients {
 // F_dr(eta) = -1.440/eta^2 + 0.710/eta + 0.668 + 0.0636 eta  (Egan and Hilgeman fit).
 double fresnelDiffuseReflectance(double eta);
 
-// R_d(r): diffuse reflectance profile at distance r [mm], in mm^-2.
+// R_d(r): diffuse reflectance profile at distance r [mm], in mm^-2. No checks (a hot
+// function): c must hold positive finite coefficients and eta >= 1 (validateMaterial).
 double dipoleProfile(double r, const DipoleCoefficients& c);
 
 // integral_0^inf R_d(r) 2 pi r dr in closed form, a function of alpha' and eta only.
@@ -23,6 +24,8 @@ double dipoleTotalReflectance(double alphaPrime, double eta);
 
 // Exact unpolarized dielectric Fresnel transmittance 1 - F_r for light arriving from
 // outside (index 1) onto a medium of index eta, at incidence cos(theta) in [0, 1].
+// cos(theta) is clamped into [0, 1]; eta = 1 gives 1; eta < 1 gives 0 beyond the critical
+// angle. Throws opal::Error for eta not positive and finite or cos(theta) NaN.
 double fresnelTransmittance(double eta, double cosTheta);
 
 }  // namespace opal

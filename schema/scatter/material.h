@@ -53,9 +53,13 @@ struct EditableRange {
     // The default: contains all ten presets with a margin.
     static EditableRange coveringPresets();
 
+    // Throws opal::Error (prefixed with context) unless every interval is finite, positive
+    // and ordered and etaMin >= 1.
+    void validate(std::string_view context) const;
     bool contains(const Material& m) const;
     // Clamps every coefficient into the range; each clamped value adds a warning naming
     // the parameter, the channel, the value and the bound. Non-finite input throws.
+    // warnings may be null.
     Material clamp(const Material& m, std::vector<std::string>* warnings) const;
 };
 

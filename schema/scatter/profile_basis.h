@@ -13,9 +13,12 @@ namespace opal {
 
 struct ProfileBasisSettings {
     int K = 12;                      // number of basis functions kept
-    double rMax = 0.0;               // mm; 0 picks a default that covers the range's profiles
-    int radialSamples = 0;           // 0 picks the default
-    int trainingMaterials = 0;       // 0 picks the default
+    // mm; 0 picks 400 z_min with z_min = 1/(sigmaSPrimeMax + sigmaAMax) the depth of the
+    // range's narrowest profile (36 mm for the default range). The K-term error grows with
+    // rMax / z_min (see profile_basis.cpp); bakes pass the asset's size.
+    double rMax = 0.0;
+    int radialSamples = 0;           // 0 picks the default (256, see radial_grid.h)
+    int trainingMaterials = 0;       // 0 picks the default (2048 channels, material_sampler.h)
     EditableRange range = EditableRange::coveringPresets();
     std::uint64_t seed = 1;
 };
@@ -29,6 +32,7 @@ public:
                  std::vector<double> eigenvalues, EditableRange range);
 
     // Weighted PCA (Eigen SVD) over materials sampled log-uniformly in settings.range.
+    // Deterministic for given settings. Throws opal::Error naming the bad setting.
     static ProfileBasis fit(const ProfileBasisSettings& settings);
 
     int K() const { return static_cast<int>(eigenvalues_.size()); }
@@ -36,12 +40,16 @@ public:
     std::span<const double> radii() const { return radii_; }      // r_l, mm
     std::span<const double> weights() const { return weights_; }  // w_l = 2 pi r_l dr_l
     std::span<const double> values() const { return values_; }    // b_k(r_l), K x L
-    std::span<const double> eigenvalues() const { return eigenvalues_; }  // singular values^2
+    // singular values^2 / J (J training materials): since every row of M has unit norm,
+    // the fraction of the training energy each b_k carries; decreasing, sum <= 1.
+    std::span<const double> eigenvalues() const { return eigenvalues_; }
     const EditableRange& range() const { return range_; }
 
-    // b_k(r), interpolated between the stored samples; 0 beyond rMax.
+    // b_k(r), linearly interpolated between the stored samples; 0 beyond rMax. Throws for
+    // k outside [0, K) or r negative or NaN.
     double evaluate(int k, double r) const;
-    // s_k(sigma) = sum_l w_l R_d(r_l, sigma) b_k(r_l): K numbers per channel.
+    // s_k(sigma) = sum_l w_l R_d(r_l, sigma) b_k(r_l): K numbers per channel. Throws
+    // opal::Error for non-positive or non-finite coefficients or eta < 1.
     std::vector<double> coefficients(const DipoleCoefficients& c) const;
     std::array<std::vector<double>, 3> project(const Material& m) const;
     // sum_k s_k b_k(r).
@@ -59,15 +67,19 @@ private:
 // a dense table in u = sqrt(r / rMax) with linear interpolation.
 class BasisLookup {
 public:
+    // Throws opal::Error for an empty basis or resolution < 1.
     BasisLookup(const ProfileBasis& basis, int resolution = 4096);
     int K() const { return K_; }
-    // out[k] = b_k(r) for k < K; r in mm. Zero beyond rMax.
+    float rMax() const { return rMax_; }  // mm
+    // out[k] = b_k(r) for k < K; r in mm. Zero beyond rMax (and for r < 0 or NaN).
+    // No allocation, one branch: the bake calls it for every pair of samples.
     void evaluate(float r, float* out) const;
 
 private:
     int K_ = 0;
     int resolution_ = 0;
     float rMax_ = 0.0f;
+    float scale_ = 0.0f;        // resolution / sqrt(rMax): r -> table position
     std::vector<float> table_;  // (resolution + 1) x K
 };
 
