@@ -86,7 +86,7 @@ TEST(UsdaSchema, OpalSubsurfaceApiHasTheDocumentedProperties) {
     EXPECT_EQ(api.attribute("opal:eta").type, types::Float);
     EXPECT_EQ(api.attribute("opal:unitsPerMm").type, types::Double);
     for (const char* range : {"opal:range:sigmaSPrime", "opal:range:sigmaA", "opal:range:eta"}) {
-        EXPECT_EQ(api.attribute(range).type, types::Float2) << range;
+        EXPECT_EQ(api.attribute(range).type, types::Double2) << range;
     }
     EXPECT_EQ(api.attribute("opal:basis:K").type, types::Int);
     for (const char* array : {"opal:basis:eigenvalues", "opal:basis:radii", "opal:basis:weights", "opal:basis:values"}) {

@@ -1,0 +1,67 @@
+#include "delegate/camera.h"
+
+#include "delegate/irradiance.h"
+#include "schema/error.h"
+
+#include <cmath>
+#include <string>
+
+namespace opal {
+
+namespace {
+
+void validate(const hd::CameraDesc& d, const hd::SdfPath& id) {
+    const auto fail = [&](const std::string& what) { throw Error("camera '" + id + "': " + what); };
+    if (!(d.focalLength > 0.0) || !std::isfinite(d.focalLength))
+        fail("focal length " + std::to_string(d.focalLength) + " is not positive");
+    if (!(d.horizontalAperture > 0.0) || !(d.verticalAperture > 0.0) || !std::isfinite(d.horizontalAperture) ||
+        !std::isfinite(d.verticalAperture))
+        fail("apertures " + std::to_string(d.horizontalAperture) + " x " + std::to_string(d.verticalAperture) +
+             " are not positive");
+    if (!(d.nearClip > 0.0) || !(d.farClip > d.nearClip))
+        fail("clipping range [" + std::to_string(d.nearClip) + ", " + std::to_string(d.farClip) +
+             "] is not 0 < near < far");
+    try {
+        rotationOf(d.transform, "transform");
+    } catch (const Error& e) {
+        fail(e.what());
+    }
+}
+
+}  // namespace
+
+void OpalCamera::sync(const hd::SceneDelegate& scene, hd::DirtyBits* dirtyBits) {
+    if (*dirtyBits != hd::Dirty::Clean) {
+        hd::CameraDesc desc = scene.camera(id());
+        validate(desc, id());
+        desc_ = desc;
+    }
+    *dirtyBits = hd::Dirty::Clean;
+}
+
+CameraView::CameraView(const hd::CameraDesc& desc, int width, int height, const hd::SdfPath& id)
+    : width_(width), height_(height), near_(desc.nearClip), far_(desc.farClip) {
+    validate(desc, id);
+    if (width <= 0 || height <= 0)
+        throw Error("camera '" + id + "': image size " + std::to_string(width) + " x " + std::to_string(height) +
+                    " is not positive");
+    rotation_ = rotationOf(desc.transform, "camera");
+    desc.transform.multVecMatrix(Imath::V3d(0.0), origin_);
+    // Fit: the aperture inside the image, the other dimension extended.
+    halfWidth_ = 0.5 * desc.horizontalAperture / desc.focalLength;
+    halfHeight_ = 0.5 * desc.verticalAperture / desc.focalLength;
+    const double imageAspect = double(width) / double(height);
+    if (imageAspect > halfWidth_ / halfHeight_)
+        halfWidth_ = halfHeight_ * imageAspect;
+    else
+        halfHeight_ = halfWidth_ / imageAspect;
+}
+
+Ray CameraView::ray(double px, double py) const {
+    const double sx = (2.0 * px / width_ - 1.0) * halfWidth_;
+    const double sy = (1.0 - 2.0 * py / height_) * halfHeight_;
+    const Imath::V3d direction = Imath::V3d(sx, sy, -1.0) * rotation_;
+    return {Imath::V3f(origin_), Imath::V3f(direction), float(near_), float(far_)};
+}
+
+}  // namespace opal

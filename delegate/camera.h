@@ -1,0 +1,58 @@
+// The camera Sprim (UsdGeomCamera) and the primary rays it shoots (DESIGN.md s.7).
+//
+// Conventions (delegate/DELEGATE.md): the camera looks down its local -Z axis, +X is to
+// the right of the image and +Y up; pixel (x, y) has its centre at (x + 0.5, y + 0.5) with
+// row 0 at the top. The film (horizontal x vertical aperture at focalLength) is fitted
+// into the image ("fit" conform, as usdview): the whole aperture is visible, pixels are
+// square, and the image's extra width or height extends the view. The camera's transform
+// may rotate, translate and scale uniformly (the scale is ignored); depth along the view
+// axis is then in world units.
+#pragma once
+
+#include "delegate/hd/prim.h"
+#include "delegate/ray_scene.h"
+
+#include <Imath/ImathMatrix.h>
+#include <Imath/ImathVec.h>
+
+namespace opal {
+
+class OpalCamera final : public hd::Sprim {
+public:
+    using hd::Sprim::Sprim;
+
+    // Pulls the description on any dirty bit; throws opal::Error naming the prim for a
+    // non-positive focal length or aperture, a clip range that is not 0 < near < far, or a
+    // transform that is not a rotation, uniform scale and translation.
+    void sync(const hd::SceneDelegate& scene, hd::DirtyBits* dirtyBits) override;
+
+    const hd::CameraDesc& desc() const { return desc_; }
+
+private:
+    hd::CameraDesc desc_;
+};
+
+class CameraView {
+public:
+    // Throws opal::Error naming `id` as OpalCamera::sync does, or for a non-positive size.
+    CameraView(const hd::CameraDesc& desc, int width, int height, const hd::SdfPath& id);
+
+    int width() const { return width_; }
+    int height() const { return height_; }
+    // The ray through image position (px, py) in pixels (x right, y down): its direction has
+    // a camera-space z of -1, so the ray parameter t is the depth along the view axis.
+    // t runs over [nearClip, farClip].
+    Ray ray(double px, double py) const;
+    // The angle a pixel subtends at the image centre (radians).
+    double pixelAngle() const { return 2.0 * halfHeight_ / height_; }
+    const Imath::V3d& position() const { return origin_; }
+
+private:
+    int width_ = 0, height_ = 0;
+    Imath::V3d origin_;
+    Imath::M33d rotation_;  // camera to world, row vectors
+    double halfWidth_ = 0.0, halfHeight_ = 0.0;  // the image's half extents on the plane z = -1
+    double near_ = 0.0, far_ = 0.0;
+};
+
+}  // namespace opal

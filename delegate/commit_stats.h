@@ -1,0 +1,43 @@
+// What a commitResources did and how long it took: for hosts (a viewer's status line),
+// benchmarks (irradiance vs products vs material time) and tests (a material edit must not
+// recompute irradiance products). The delegate reports them as read-only render settings
+// "opal:stats:..." too (delegate/DELEGATE.md).
+#pragma once
+
+#include <cstdint>
+
+namespace opal {
+
+struct CommitStats {
+    // Wall-clock milliseconds.
+    double totalMs = 0.0;        // the whole commitResources
+    double rayScenesMs = 0.0;    // rebuilding the Embree scene
+    double irradianceMs = 0.0;   // E_m at the samples: lights, shadows, domes (MeshIrradiance)
+    double productsMs = 0.0;     // y_k = (w1 T_k w0^-1) w0 E (RelightEngine::setIrradiance)
+    double materialMs = 0.0;     // s_k, the weighted sum, inverse 9/7, the vertices (setMaterial, outputs)
+    double referenceMs = 0.0;    // the exact gather (opal:reference)
+
+    // Counts of work done.
+    std::uint64_t rayScenes = 0;           // Embree scenes built
+    std::uint64_t lightEvaluations = 0;    // one light's E at one mesh's samples
+    std::uint64_t irradianceProducts = 0;  // RelightEngine::setIrradiance calls
+    std::uint64_t materialUpdates = 0;     // RelightEngine::setMaterial calls
+    std::uint64_t referenceGathers = 0;    // exact O(N^2) gathers of one mesh
+
+    CommitStats& operator+=(const CommitStats& o) {
+        totalMs += o.totalMs;
+        rayScenesMs += o.rayScenesMs;
+        irradianceMs += o.irradianceMs;
+        productsMs += o.productsMs;
+        materialMs += o.materialMs;
+        referenceMs += o.referenceMs;
+        rayScenes += o.rayScenes;
+        lightEvaluations += o.lightEvaluations;
+        irradianceProducts += o.irradianceProducts;
+        materialUpdates += o.materialUpdates;
+        referenceGathers += o.referenceGathers;
+        return *this;
+    }
+};
+
+}  // namespace opal

@@ -1,0 +1,164 @@
+#include "delegate/environment_light.h"
+
+#include "schema/error.h"
+#include "schema/wavelet/haar.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+namespace opal {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr int kSupersamples = 4;  // per axis and cube-map texel
+
+}  // namespace
+
+LatLongMap::LatLongMap(int width, int height, std::vector<float> rgb) {
+    if (width <= 0 || height <= 0 || rgb.size() != std::size_t(width) * std::size_t(height) * 3)
+        throw Error("lat-long map: " + std::to_string(rgb.size()) + " floats do not make a " + std::to_string(width) +
+                    " x " + std::to_string(height) + " RGB image");
+    for (std::size_t i = 0; i < rgb.size(); ++i)
+        if (!std::isfinite(rgb[i]))
+            throw Error("lat-long map: pixel " + std::to_string(i / 3 % std::size_t(width)) + ", " +
+                        std::to_string(i / 3 / std::size_t(width)) + " is not finite");
+    levels_.push_back({width, height, std::move(rgb)});
+    while (levels_.back().height > 1 || levels_.back().width > 1) levels_.push_back(halve(levels_.back()));
+}
+
+// One pyramid step: every coarse pixel is the mean of the (up to) 2 x 2 fine pixels under it.
+LatLongMap::Level LatLongMap::halve(const Level& fine) {
+    Level coarse{std::max(1, (fine.width + 1) / 2), std::max(1, (fine.height + 1) / 2), {}};
+    coarse.rgb.assign(std::size_t(coarse.width) * coarse.height * 3, 0.0f);
+    for (int y = 0; y < coarse.height; ++y)
+        for (int x = 0; x < coarse.width; ++x) {
+            float sum[3] = {0.0f, 0.0f, 0.0f};
+            int count = 0;
+            for (int fy = 2 * y; fy < std::min(2 * y + 2, fine.height); ++fy)
+                for (int fx = 2 * x; fx < std::min(2 * x + 2, fine.width); ++fx, ++count)
+                    for (int c = 0; c < 3; ++c) sum[c] += fine.rgb[(std::size_t(fy) * fine.width + fx) * 3 + c];
+            for (int c = 0; c < 3; ++c) coarse.rgb[(std::size_t(y) * coarse.width + x) * 3 + c] = sum[c] / float(count);
+        }
+    return coarse;
+}
+
+// phi = pi (1 - 2u), theta = pi (1/2 - v); d = (cos theta sin phi, sin theta, cos theta cos phi).
+Imath::V3d LatLongMap::direction(double u, double v) {
+    const double phi = kPi * (1.0 - 2.0 * u), theta = kPi * (0.5 - v);
+    return {std::cos(theta) * std::sin(phi), std::sin(theta), std::cos(theta) * std::cos(phi)};
+}
+
+Imath::V2d LatLongMap::coordinates(const Imath::V3d& d) {
+    const double length = d.length();
+    const double theta = std::asin(std::clamp(d.y / length, -1.0, 1.0));
+    const double phi = std::atan2(d.x, d.z);
+    return {0.5 * (1.0 - phi / kPi), 0.5 - theta / kPi};
+}
+
+// Bilinear between pixel centres; wraps around in longitude, clamps at the poles.
+Imath::V3f LatLongMap::bilinear(const Level& level, double u, double v) const {
+    const double x = (u - std::floor(u)) * level.width - 0.5, y = v * level.height - 0.5;
+    const double x0 = std::floor(x), y0 = std::floor(y);
+    const float fx = float(x - x0), fy = float(y - y0);
+    const auto column = [&](double c) {  // u in [0, 1] puts c in [-1, width]: wrap once
+        const int i = int(c);
+        return i < 0 ? i + level.width : (i >= level.width ? i - level.width : i);
+    };
+    const auto row = [&](double r) { return std::clamp(int(r), 0, level.height - 1); };
+    const int xa = column(x0), xb = column(x0 + 1), ya = row(y0), yb = row(y0 + 1);
+    const auto at = [&](int px, int py) {
+        const float* p = level.rgb.data() + (std::size_t(py) * level.width + px) * 3;
+        return Imath::V3f(p[0], p[1], p[2]);
+    };
+    return (at(xa, ya) * (1.0f - fx) + at(xb, ya) * fx) * (1.0f - fy) + (at(xa, yb) * (1.0f - fx) + at(xb, yb) * fx) * fy;
+}
+
+Imath::V3f LatLongMap::sample(double u, double v, double footprint) const {
+    // Level l has pixels pi 2^l / H tall: the finest level with pixels >= footprint / 2,
+    // so bilinear taps `footprint` apart still see every pixel.
+    const double ratio = footprint * height() / kPi;
+    const int level = ratio > 1.0 ? std::min(int(std::log2(ratio)), int(levels_.size()) - 1) : 0;
+    return bilinear(levels_[std::size_t(level)], u, v);
+}
+
+EnvironmentLight::EnvironmentLight(std::shared_ptr<const LatLongMap> map, const Imath::M44d& domeToWorld,
+                                   const Rgb& scale)
+    : map_(std::move(map)), worldToDome_(rotationOf(domeToWorld, "dome light").transposed()), scale_(scale) {
+    if (!map_) throw Error("dome light: no lat-long map");
+    if (!std::isfinite(scale.x) || !std::isfinite(scale.y) || !std::isfinite(scale.z))
+        throw Error("dome light: color * intensity * 2^exposure is not finite");
+}
+
+EnvironmentLight EnvironmentLight::fromDesc(std::shared_ptr<const LatLongMap> map, const hd::LightDesc& desc) {
+    if (desc.kind != hd::LightKind::Dome) throw Error("dome light: the description is not a dome light");
+    return EnvironmentLight(std::move(map), desc.transform, desc.color * (desc.intensity * std::exp2(desc.exposure)));
+}
+
+std::vector<float> EnvironmentLight::cubeRadiance(const CubeMapLayout& cube, const Imath::M44d& objectToWorld) const {
+    // Object -> world -> dome, row vectors.
+    const Imath::M33d objectToDome = rotationOf(objectToWorld, "dome light: mesh") * worldToDome_;
+    const std::uint32_t size = cube.faceSize();
+    std::vector<float> radiance(std::size_t(cube.texels()) * 3);
+    tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, cube.texels(), 64), [&](const auto& range) {
+        for (std::uint32_t index = range.begin(); index != range.end(); ++index) {
+            const CubeMapTexel texel = cube.texel(index);
+            const double footprint = std::sqrt(cube.solidAngle(index)) / kSupersamples;
+            Imath::V3d sum(0.0);
+            double weights = 0.0;
+            for (int a = 0; a < kSupersamples; ++a)
+                for (int b = 0; b < kSupersamples; ++b) {
+                    const double s = 2.0 * (texel.u + (a + 0.5) / kSupersamples) / size - 1.0;
+                    const double t = 2.0 * (texel.v + (b + 0.5) / kSupersamples) / size - 1.0;
+                    const double q = 1.0 + s * s + t * t;
+                    const double w = 1.0 / (q * std::sqrt(q));  // solid angle per unit face area
+                    const Imath::V3d d = Imath::V3d(CubeMapLayout::faceDirection(texel.face, float(s), float(t))) * objectToDome;
+                    const Imath::V2d uv = LatLongMap::coordinates(d);
+                    sum += Imath::V3d(map_->sample(uv.x, uv.y, footprint)) * w;
+                    weights += w;
+                }
+            for (int c = 0; c < 3; ++c) radiance[std::size_t(index) * 3 + c] = float(sum[c] / weights * scale_[c]);
+        }
+    });
+    return radiance;
+}
+
+std::vector<float> EnvironmentLight::haarRadiance(const CubeMapLayout& cube, const Imath::M44d& objectToWorld) const {
+    std::vector<float> radiance = cubeRadiance(cube, objectToWorld);
+    haarForwardCharts(std::span<float>(radiance), cube.charts(), 3);
+    return radiance;
+}
+
+void addEnvironmentIrradiance(const EnvironmentTransfer& transfer, std::span<const float> haarRadiance,
+                              IrradianceMoments& moments) {
+    const std::size_t rows = std::size_t(moments.samples) * moments.terms;
+    const std::size_t texels = 6 * std::size_t(transfer.cubeFaceSize) * transfer.cubeFaceSize;
+    if (transfer.fresnelTerms != moments.terms || transfer.offsets.size() != rows + 1)
+        throw Error("dome light: the environment transfer has " + std::to_string(transfer.offsets.size()) +
+                    " row offsets and " + std::to_string(transfer.fresnelTerms) + " Fresnel terms, expected " +
+                    std::to_string(rows + 1) + " and " + std::to_string(moments.terms));
+    if (haarRadiance.size() != texels * 3)
+        throw Error("dome light: " + std::to_string(haarRadiance.size()) + " radiance values for " +
+                    std::to_string(texels) + " RGB texels");
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rows, 1024), [&](const auto& range) {
+        for (std::size_t r = range.begin(); r != range.end(); ++r) {
+            float sum[3] = {0.0f, 0.0f, 0.0f};  // <T_{i,m}, L> per channel
+            for (std::uint32_t e = transfer.offsets[r]; e < transfer.offsets[r + 1]; ++e) {
+                const float* l = haarRadiance.data() + std::size_t(transfer.indices[e]) * 3;
+                const float t = transfer.values[e];
+                sum[0] += t * l[0];
+                sum[1] += t * l[1];
+                sum[2] += t * l[2];
+            }
+            float* out = moments.values.data() + r * 3;  // row r = sample * terms + m
+            for (int c = 0; c < 3; ++c) out[c] += sum[c];
+        }
+    });
+}
+
+}  // namespace opal

@@ -1,0 +1,82 @@
+#include "delegate/light.h"
+
+#include "schema/error.h"
+
+#include <cmath>
+
+namespace opal {
+
+namespace {
+
+hd::LightKind kindOf(const hd::Token& type, const hd::SdfPath& id) {
+    if (type == hd::PrimType::SphereLight) return hd::LightKind::Sphere;
+    if (type == hd::PrimType::DistantLight) return hd::LightKind::Distant;
+    if (type == hd::PrimType::DomeLight) return hd::LightKind::Dome;
+    throw Error("light '" + id + "': Opal's lights are sphereLight, distantLight and domeLight, not '" + type + "'");
+}
+
+}  // namespace
+
+const char* lightKindName(hd::LightKind kind) {
+    switch (kind) {
+        case hd::LightKind::Sphere: return "sphere";
+        case hd::LightKind::Distant: return "distant";
+        case hd::LightKind::Dome: return "dome";
+        case hd::LightKind::ShadowField: return "shadow field";
+    }
+    return "unknown";
+}
+
+OpalLight::OpalLight(const hd::SdfPath& id, const hd::Token& type, DomeTextureCache& textures, PrimVersions& versions)
+    : hd::Sprim(id), kind_(kindOf(type, id)), textures_(textures), versions_(versions) {}
+
+void OpalLight::sync(const hd::SceneDelegate& scene, hd::DirtyBits* dirtyBits) {
+    if (*dirtyBits != hd::Dirty::Clean) {
+        const hd::LightDesc desc = scene.light(id());
+        if (desc.kind != kind_)
+            throw Error("light '" + id() + "': a " + lightKindName(kind_) + " light prim was described as a " +
+                        lightKindName(desc.kind) + " light");
+        std::shared_ptr<const LatLongMap> map;
+        if (kind_ == hd::LightKind::Dome) {
+            try {
+                // Cached by file and color space: editing intensity or rotation reads nothing.
+                map = textures_.get(desc.textureFile, desc.textureColorSpace);
+            } catch (const Error& e) {
+                throw Error("light '" + id() + "': " + e.what());
+            }
+        }
+        build(desc, std::move(map));
+    }
+    *dirtyBits = hd::Dirty::Clean;
+}
+
+void OpalLight::reloadTexture() {
+    if (kind_ != hd::LightKind::Dome || version_ == 0) return;
+    std::shared_ptr<const LatLongMap> map;
+    try {
+        map = textures_.get(desc_.textureFile, desc_.textureColorSpace);
+    } catch (const Error& e) {
+        throw Error("light '" + id() + "': " + e.what());
+    }
+    build(desc_, std::move(map));
+}
+
+void OpalLight::build(const hd::LightDesc& desc, std::shared_ptr<const LatLongMap> map) {
+    try {
+        if (kind_ == hd::LightKind::Dome) {
+            auto environment = std::make_shared<const EnvironmentLight>(EnvironmentLight::fromDesc(map, desc));
+            worldToDome_ = rotationOf(desc.transform, "transform").transposed();
+            domeScale_ = desc.color * (desc.intensity * std::exp2(desc.exposure));
+            environment_ = std::move(environment);
+            map_ = std::move(map);
+        } else {
+            analytic_ = AnalyticLight::fromDesc(desc);
+        }
+    } catch (const Error& e) {
+        throw Error("light '" + id() + "': " + e.what());
+    }
+    desc_ = desc;
+    version_ = versions_.next();
+}
+
+}  // namespace opal

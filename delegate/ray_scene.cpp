@@ -1,0 +1,170 @@
+#include "delegate/ray_scene.h"
+
+#include "schema/error.h"
+
+#include <algorithm>
+#include <limits>
+#include <string>
+
+namespace opal {
+
+namespace {
+
+[[noreturn]] void embreeFailure(RTCDevice device, const std::string& what) {
+    throw Error("Embree: " + what + " failed (error " + std::to_string(int(rtcGetDeviceError(device))) + ")");
+}
+
+RTCRay toEmbree(const Ray& r) {
+    RTCRay ray{};
+    ray.org_x = r.origin.x;
+    ray.org_y = r.origin.y;
+    ray.org_z = r.origin.z;
+    ray.dir_x = r.direction.x;
+    ray.dir_y = r.direction.y;
+    ray.dir_z = r.direction.z;
+    ray.tnear = r.tNear;
+    ray.tfar = r.tFar;
+    ray.mask = std::numeric_limits<unsigned>::max();
+    return ray;
+}
+
+// Fans every polygon (c0, c(t+1), c(t+2)), checking indices against the point count.
+void fanTriangles(const RenderMesh& mesh, std::vector<std::uint32_t>& triangles,
+                  std::vector<std::uint32_t>& faceOfTriangle) {
+    std::size_t corner = 0;
+    for (std::size_t face = 0; face < mesh.faceVertexCounts.size(); ++face) {
+        const std::int32_t count = mesh.faceVertexCounts[face];
+        if (count < 3 || corner + std::size_t(count) > mesh.faceVertexIndices.size())
+            throw Error("ray scene: face " + std::to_string(face) + " has " + std::to_string(count) +
+                        " corners or runs past the face-vertex indices");
+        for (std::int32_t c = 0; c < count; ++c) {
+            const std::int32_t v = mesh.faceVertexIndices[corner + std::size_t(c)];
+            if (v < 0 || std::size_t(v) >= mesh.points.size())
+                throw Error("ray scene: face " + std::to_string(face) + " uses vertex " + std::to_string(v) +
+                            " of " + std::to_string(mesh.points.size()));
+        }
+        for (std::int32_t t = 0; t + 2 < count; ++t) {
+            triangles.push_back(std::uint32_t(mesh.faceVertexIndices[corner]));
+            triangles.push_back(std::uint32_t(mesh.faceVertexIndices[corner + std::size_t(t) + 1]));
+            triangles.push_back(std::uint32_t(mesh.faceVertexIndices[corner + std::size_t(t) + 2]));
+            faceOfTriangle.push_back(std::uint32_t(face));
+        }
+        corner += std::size_t(count);
+    }
+}
+
+}  // namespace
+
+RayScene::RayScene() {
+    device_ = rtcNewDevice(nullptr);
+    if (!device_) embreeFailure(nullptr, "creating a device");
+    scene_ = rtcNewScene(device_);
+    if (!scene_) embreeFailure(device_, "creating a scene");
+}
+
+RayScene::~RayScene() {
+    if (scene_) rtcReleaseScene(scene_);
+    if (device_) rtcReleaseDevice(device_);
+}
+
+std::uint32_t RayScene::addMesh(const RenderMesh& mesh, const Imath::M44d& objectToWorld) {
+    Mesh added;
+    fanTriangles(mesh, added.triangles, added.faceOfTriangle);
+    RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
+    if (!geometry) embreeFailure(device_, "creating a triangle geometry");
+    auto* points = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                               3 * sizeof(float), mesh.points.size()));
+    auto* indices = static_cast<std::uint32_t*>(rtcSetNewGeometryBuffer(
+        geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(std::uint32_t), added.faceOfTriangle.size()));
+    if (!points || !indices) {
+        rtcReleaseGeometry(geometry);
+        embreeFailure(device_, "allocating mesh buffers");
+    }
+    for (std::size_t v = 0; v < mesh.points.size(); ++v) {
+        Imath::V3d world;
+        objectToWorld.multVecMatrix(Imath::V3d(mesh.points[v]), world);
+        const Imath::V3f p(world);
+        points[3 * v + 0] = p.x;
+        points[3 * v + 1] = p.y;
+        points[3 * v + 2] = p.z;
+        bounds_.extendBy(p);
+    }
+    std::copy(added.triangles.begin(), added.triangles.end(), indices);
+    rtcCommitGeometry(geometry);
+    const unsigned id = rtcAttachGeometry(scene_, geometry);
+    rtcReleaseGeometry(geometry);
+    if (id != meshes_.size()) throw Error("ray scene: Embree numbered a geometry out of order");
+    meshes_.push_back(std::move(added));
+    extent_ = bounds_.isEmpty() ? 0.0f : (bounds_.max - bounds_.min).length();
+    committed_ = false;
+    return id;
+}
+
+void RayScene::commit() {
+    rtcCommitScene(scene_);
+    if (rtcGetDeviceError(device_) != RTC_ERROR_NONE) embreeFailure(device_, "building the scene");
+    committed_ = true;
+}
+
+std::array<std::uint32_t, 3> RayScene::triangleVertices(std::uint32_t prim, std::uint32_t triangle) const {
+    const std::vector<std::uint32_t>& t = meshes_.at(prim).triangles;
+    if (3 * std::size_t(triangle) + 2 >= t.size())
+        throw Error("ray scene: triangle " + std::to_string(triangle) + " out of range for mesh " + std::to_string(prim));
+    return {t[3 * triangle], t[3 * triangle + 1], t[3 * triangle + 2]};
+}
+
+std::uint32_t RayScene::triangleFace(std::uint32_t prim, std::uint32_t triangle) const {
+    return meshes_.at(prim).faceOfTriangle.at(triangle);
+}
+
+void RayScene::requireCommitted(const char* query) const {
+    if (!committed_) throw Error(std::string("ray scene: ") + query + " on a scene that is not committed");
+}
+
+bool RayScene::occluded(const Ray& r) const {
+    requireCommitted("occluded");
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRay ray = toEmbree(r);
+    rtcOccluded1(scene_, &context, &ray);
+    return ray.tfar < 0.0f;  // Embree marks a blocked ray with tfar = -inf
+}
+
+void RayScene::occluded(std::span<const Ray> rays, std::span<std::uint8_t> blocked) const {
+    requireCommitted("occluded");
+    if (blocked.size() != rays.size())
+        throw Error("ray scene: " + std::to_string(blocked.size()) + " results for " + std::to_string(rays.size()) +
+                    " rays");
+    constexpr std::size_t kStream = 64;
+    RTCRay stream[kStream];
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    for (std::size_t first = 0; first < rays.size(); first += kStream) {
+        const std::size_t n = std::min(kStream, rays.size() - first);
+        for (std::size_t i = 0; i < n; ++i) stream[i] = toEmbree(rays[first + i]);
+        rtcOccluded1M(scene_, &context, stream, unsigned(n), sizeof(RTCRay));
+        for (std::size_t i = 0; i < n; ++i) blocked[first + i] = stream[i].tfar < 0.0f ? 1 : 0;
+    }
+}
+
+std::optional<RayHit> RayScene::intersect(const Ray& r) const {
+    requireCommitted("intersect");
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRayHit query{};
+    query.ray = toEmbree(r);
+    query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    query.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(scene_, &context, &query);
+    if (query.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+    RayHit hit;
+    hit.prim = query.hit.geomID;
+    hit.triangle = query.hit.primID;
+    hit.u = query.hit.u;
+    hit.v = query.hit.v;
+    hit.t = query.ray.tfar;
+    hit.geometricNormal = {query.hit.Ng_x, query.hit.Ng_y, query.hit.Ng_z};
+    return hit;
+}
+
+}  // namespace opal

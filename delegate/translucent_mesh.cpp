@@ -1,0 +1,238 @@
+#include "delegate/translucent_mesh.h"
+
+#include "delegate/reference_gather.h"
+#include "schema/error.h"
+
+#include <chrono>
+
+namespace opal {
+
+namespace {
+
+class Stopwatch {
+public:
+    double ms() const {
+        return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start_).count();
+    }
+
+private:
+    std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
+// What the renderer needs beyond what RelightEngine checks: per-vertex weights and normals
+// that match the render mesh.
+void checkShadeable(const TranslucentAsset& asset, const hd::SdfPath& id) {
+    const std::size_t vertices = asset.mesh.points.size();
+    const auto fail = [&](const std::string& what) {
+        throw Error("translucent mesh '" + id + "': asset '" + asset.name + "': " + what);
+    };
+    if (vertices == 0 || asset.mesh.faceVertexCounts.empty()) fail("the render mesh is empty");
+    if (asset.vertexWeights.offsets.size() != vertices + 1)
+        fail(std::to_string(asset.vertexWeights.offsets.size()) + " vertex weight offsets for " +
+             std::to_string(vertices) + " render-mesh vertices (expected vertices + 1)");
+    if (!asset.mesh.normals.empty() && asset.mesh.normals.size() != vertices)
+        fail(std::to_string(asset.mesh.normals.size()) + " normals for " + std::to_string(vertices) + " vertices");
+}
+
+std::vector<float> toVertices(const VertexWeights& weights, std::span<const float> perSample) {
+    std::vector<float> out((weights.offsets.size() - 1) * 3);
+    interpolateToVertices(weights, perSample, out);
+    return out;
+}
+
+}  // namespace
+
+void TranslucentMesh::fail(const std::string& what) const { throw Error("translucent mesh '" + id() + "': " + what); }
+
+void TranslucentMesh::sync(const hd::SceneDelegate& scene, hd::DirtyBits* dirtyBits) {
+    namespace Dirty = hd::Dirty;
+    const hd::DirtyBits bits = *dirtyBits;
+    if (bits & (Dirty::Topology | Dirty::Transform | Dirty::Material | Dirty::Visibility)) {
+        const hd::MeshDesc d = scene.mesh(id());
+        // Validate everything first: a failed sync leaves the mesh as it was.
+        if (bits & Dirty::Topology) {
+            if (!d.asset) fail("the scene gave no asset");
+            checkShadeable(*d.asset, id());
+        }
+        if (bits & Dirty::Transform) {
+            try {
+                rotationOf(d.transform, "transform");
+            } catch (const Error& e) {
+                fail(e.what());
+            }
+        }
+        if (bits & Dirty::Topology) {
+            desc_.asset = d.asset;
+            topologyChanged_ = true;
+        }
+        if ((bits & Dirty::Transform) && (d.transform != desc_.transform || topologyChanged_)) {
+            desc_.transform = d.transform;
+            transformChanged_ = true;
+        }
+        if (bits & Dirty::Material) desc_.material = d.material;
+        if ((bits & Dirty::Visibility) && d.visible != desc_.visible) {
+            desc_.visible = d.visible;
+            visibilityChanged_ = true;
+        }
+    }
+    *dirtyBits = Dirty::Clean;
+}
+
+void TranslucentMesh::addLight(const hd::SdfPath& light, const LightSource& source, const RayScene& rays,
+                               CommitStats& stats) {
+    try {
+        if (source.analytic)
+            irradiance_->setLight(light, *source.analytic, rays);
+        else
+            irradiance_->setLight(light, source.environment);
+    } catch (const Error& e) {
+        fail("light '" + light + "': " + e.what());
+    }
+    appliedLights_[light] = source.version;
+    ++stats.lightEvaluations;
+}
+
+void TranslucentMesh::updateIrradiance(const LightSources& lights, const RayScene& rays, bool raysRebuilt,
+                                       CommitStats& stats) {
+    const Stopwatch clock;
+    if (topologyChanged_ || !engine_) {
+        try {
+            engine_ = std::make_unique<RelightEngine>(desc_.asset);
+        } catch (const Error& e) {
+            fail(e.what());
+        }
+        engineHasMaterial_ = false;
+        engineMoments_ = 0;
+        relightInFull_ = true;
+    }
+    if (relightInFull_ || !irradiance_) {
+        try {
+            irradiance_ = std::make_unique<MeshIrradiance>(desc_.asset, desc_.transform);
+        } catch (const Error& e) {
+            fail(e.what());
+        }
+        appliedLights_.clear();
+        for (const auto& [light, source] : lights) addLight(light, source, rays, stats);
+        relightInFull_ = false;
+        ++momentsVersion_;
+        stats.irradianceMs += clock.ms();
+        return;
+    }
+    bool changed = false;
+    // Lights gone or changed leave first, so that the bulk updates below skip them.
+    std::size_t analyticKept = 0;
+    for (auto it = appliedLights_.begin(); it != appliedLights_.end();) {
+        const auto light = lights.find(it->first);
+        if (light == lights.end() || light->second.version != it->second) {
+            irradiance_->removeLight(it->first);
+            it = appliedLights_.erase(it);
+            changed = true;
+        } else {
+            if (light->second.analytic) ++analyticKept;
+            ++it;
+        }
+    }
+    if (transformChanged_) {
+        try {
+            irradiance_->setTransform(desc_.transform, rays);  // samples moved: every light
+        } catch (const Error& e) {
+            fail(e.what());
+        }
+        stats.lightEvaluations += appliedLights_.size();
+        changed = true;
+    } else if (raysRebuilt && analyticKept > 0) {
+        irradiance_->updateShadows(rays);  // occluders moved: analytic lights' shadows
+        stats.lightEvaluations += analyticKept;
+        changed = true;
+    }
+    for (const auto& [light, source] : lights)
+        if (!appliedLights_.count(light)) {
+            addLight(light, source, rays, stats);
+            changed = true;
+        }
+    if (changed) {
+        ++momentsVersion_;
+        stats.irradianceMs += clock.ms();
+    }
+}
+
+void TranslucentMesh::updateMaterial(const BoundMaterial& material, CommitStats& stats,
+                                     std::vector<std::string>& warnings) {
+    if (engineHasMaterial_ && material.path == material_.path && material.version == material_.version) return;
+    const Stopwatch clock;
+    std::vector<std::string> clamped;
+    try {
+        clamped = engine_->setMaterial(material.subsurface);
+    } catch (const Error& e) {
+        fail("material '" + (material.path.empty() ? "(the asset's default)" : material.path) + "': " + e.what());
+    }
+    for (const std::string& w : clamped)
+        warnings.push_back("translucent mesh '" + id() + "', material '" +
+                           (material.path.empty() ? "(the asset's default)" : material.path) + "': " + w);
+    material_ = material;
+    engineHasMaterial_ = true;
+    ++materialVersion_;
+    ++stats.materialUpdates;
+    stats.materialMs += clock.ms();
+}
+
+void TranslucentMesh::updateRadiance(bool reference, int primId, CommitStats& stats) {
+    const OutputKey key{reference, momentsVersion_, materialVersion_, primId};
+    if (shading_ && key == output_) return;
+    auto shading = std::make_shared<MeshShading>();
+    shading->asset = desc_.asset;
+    shading->normalToWorld = Imath::M33f(rotationOf(desc_.transform, "transform"));
+    shading->specular = material_.specular;
+    shading->roughness = material_.roughness;
+    shading->primId = primId;
+    const VertexWeights& weights = desc_.asset->vertexWeights;
+    if (!reference) {
+        if (engineMoments_ != momentsVersion_) {
+            const Stopwatch clock;
+            engine_->setIrradiance(irradiance_->moments());
+            engineMoments_ = momentsVersion_;
+            ++stats.irradianceProducts;
+            stats.productsMs += clock.ms();
+        }
+        const Stopwatch clock;
+        const std::span<const float> radiance = engine_->vertexRadiance();
+        shading->vertexRadiance.assign(radiance.begin(), radiance.end());
+        shading->vertexIrradiance = toVertices(weights, engine_->sampleIrradiance());
+        shading->eta = engine_->material().eta;
+        stats.materialMs += clock.ms();
+    } else {
+        // Ground truth: the same lights' exact E (F_t(eta, .) per light, not its moment
+        // fit), the exact dipole over every pair of samples, the material as requested.
+        const Stopwatch clock;
+        const Material& m = material_.subsurface;
+        std::vector<float> exact, gathered;
+        try {
+            exact = irradiance_->exactIrradiance(m.eta);
+            gathered = referenceGather(*desc_.asset, m, exact);
+        } catch (const Error& e) {
+            fail(e.what());
+        }
+        shading->vertexRadiance = toVertices(weights, gathered);
+        shading->vertexIrradiance = toVertices(weights, exact);
+        shading->eta = m.eta;
+        ++stats.referenceGathers;
+        stats.referenceMs += clock.ms();
+    }
+    shading_ = std::move(shading);
+    output_ = key;
+}
+
+void TranslucentMesh::hide() {
+    if (topologyChanged_) {  // the old asset's state is of no further use
+        engine_.reset();
+        irradiance_.reset();
+        appliedLights_.clear();
+        engineHasMaterial_ = false;
+    }
+    shading_.reset();
+    relightInFull_ = true;
+}
+
+void TranslucentMesh::markCommitted() { topologyChanged_ = transformChanged_ = visibilityChanged_ = false; }
+
+}  // namespace opal

@@ -1,0 +1,159 @@
+#include "delegate/environment_light.h"
+
+#include "delegate/mesh_irradiance.h"
+#include "schema/error.h"
+#include "synthetic_asset.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+
+namespace opal {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+void expectDirection(const Imath::V3d& d, const Imath::V3d& expected) {
+    EXPECT_NEAR((d - expected).length(), 0.0, 1e-12) << d << " vs " << expected;
+}
+
+TEST(LatLongMap, FollowsTheOpenExrAndUsdLuxOrientation) {
+    expectDirection(LatLongMap::direction(0.5, 0.5), {0, 0, 1});    // image centre: +Z
+    expectDirection(LatLongMap::direction(0.25, 0.5), {1, 0, 0});   // a quarter in: +X
+    expectDirection(LatLongMap::direction(0.75, 0.5), {-1, 0, 0});
+    expectDirection(LatLongMap::direction(0.0, 0.5), {0, 0, -1});   // edges: -Z
+    expectDirection(LatLongMap::direction(0.3, 0.0), {0, 1, 0});    // top row: +Y
+    for (double u : {0.1, 0.4, 0.8})
+        for (double v : {0.2, 0.5, 0.9}) {
+            const Imath::V2d uv = LatLongMap::coordinates(LatLongMap::direction(u, v) * 3.0);
+            EXPECT_NEAR(uv.x, u, 1e-12);
+            EXPECT_NEAR(uv.y, v, 1e-12);
+        }
+}
+
+TEST(LatLongMap, RejectsInconsistentPixels) {
+    EXPECT_THROW(LatLongMap(4, 2, std::vector<float>(23)), Error);
+    std::vector<float> pixels(24, 1.0f);
+    pixels[5] = std::numeric_limits<float>::infinity();
+    EXPECT_THROW(LatLongMap(4, 2, pixels), Error);
+}
+
+// A map of f(direction) sampled at pixel centres.
+std::shared_ptr<LatLongMap> mapOf(int width, int height, const std::function<Imath::V3f(const Imath::V3d&)>& f) {
+    std::vector<float> rgb;
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const Imath::V3f v = f(LatLongMap::direction((x + 0.5) / width, (y + 0.5) / height));
+            rgb.insert(rgb.end(), {v.x, v.y, v.z});
+        }
+    return std::make_shared<LatLongMap>(width, height, std::move(rgb));
+}
+
+TEST(EnvironmentLight, CubeTexelsSeeTheMapInTheRightDirection) {
+    // Red from +X, green from +Y, blue from +Z, nothing elsewhere.
+    const auto map = mapOf(256, 128, [](const Imath::V3d& d) {
+        return Imath::V3f(d.x > 0.9 ? 1.0f : 0.0f, d.y > 0.9 ? 1.0f : 0.0f, d.z > 0.9 ? 1.0f : 0.0f);
+    });
+    const CubeMapLayout cube(8);
+    const std::vector<float> radiance = EnvironmentLight(map, Imath::M44d(), Rgb(1.0)).cubeRadiance(cube, Imath::M44d());
+    const auto at = [&](const Imath::V3f& d, int c) { return radiance[cube.lookup(d) * 3 + c]; };
+    EXPECT_GT(at({1, 0.01f, 0.01f}, 0), 0.9f);
+    EXPECT_GT(at({0.01f, 1, 0.01f}, 1), 0.9f);
+    EXPECT_GT(at({0.01f, 0.01f, 1}, 2), 0.9f);
+    EXPECT_EQ(at({-1, 0.01f, 0.01f}, 0), 0.0f);
+    EXPECT_EQ(at({0.01f, 0.01f, -1}, 2), 0.0f);
+}
+
+// A slab of samples with normal +Y seeing the whole upper hemisphere.
+std::shared_ptr<TranslucentAsset> hemisphereAsset(std::uint32_t faceSize, std::uint32_t terms) {
+    auto asset = std::make_shared<TranslucentAsset>();
+    test::makeSlab(*asset, 1, 1, 1, 1.0f);
+    asset->range = EditableRange::coveringPresets();
+    asset->environment = test::environmentTransfer(*asset, faceSize, terms, [](std::size_t, const Imath::V3f&) { return true; });
+    return asset;
+}
+
+Imath::M44d rotationY(double degrees) {
+    Imath::M44d m;
+    m.setAxisAngle(Imath::V3d(0, 1, 0), degrees * kPi / 180.0);
+    return m;
+}
+
+TEST(EnvironmentLight, LinearSkyGivesClosedFormMoments) {
+    // L(w) = a + b.w: E_0 = integral L mu dw = pi a + (2 pi / 3) b.n and
+    // E_1 = integral L mu (2 mu - 1) dw = (pi / 3)(a + b.n), for an unoccluded normal n.
+    const double a = 2.0;
+    const Imath::V3d b(0.5, 0.8, -0.3);
+    const auto map = mapOf(512, 256, [&](const Imath::V3d& d) { return Imath::V3f(float(a + b.dot(d))); });
+    const auto asset = hemisphereAsset(32, 2);
+    hd::LightDesc desc;
+    desc.kind = hd::LightKind::Dome;
+    desc.intensity = 0.5;
+    desc.exposure = 1.0;  // scale 1
+    // The mesh as is (normal +Y) and turned by -90 degrees about X (normal along Z).
+    Imath::M44d toMinusZ;
+    toMinusZ.setAxisAngle(Imath::V3d(1, 0, 0), -kPi / 2);
+    for (const Imath::M44d& meshTransform : {Imath::M44d(), toMinusZ}) {
+        Imath::V3d n;
+        meshTransform.multDirMatrix(Imath::V3d(0, 1, 0), n);
+        MeshIrradiance irradiance(asset, meshTransform);
+        irradiance.setLight("/dome", std::make_shared<EnvironmentLight>(EnvironmentLight::fromDesc(map, desc)));
+        const double e0 = kPi * a + 2.0 * kPi / 3.0 * b.dot(n), e1 = kPi / 3.0 * (a + b.dot(n));
+        for (std::uint32_t i = 0; i < asset->samples.size(); ++i) {
+            EXPECT_NEAR(irradiance.moments().sample(i)[0], e0, 0.005 * e0) << "normal " << n;
+            EXPECT_NEAR(irradiance.moments().sample(i)[3], e1, 0.01 * e1) << "normal " << n;
+        }
+    }
+}
+
+TEST(EnvironmentLight, DomeRotationEqualsShiftedMap) {
+    // Rotating the dome by 90 degrees about +Y brings what the map shows at +Z (u = 1/2) to
+    // world +X (u = 1/4): the same as the unrotated map shifted left by a quarter width.
+    const int width = 64, height = 32;
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> uniform(0.0f, 2.0f);
+    std::vector<float> pixels(std::size_t(width) * height * 3);
+    for (float& p : pixels) p = uniform(rng);
+    std::vector<float> shifted(pixels.size());
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x)
+            for (int c = 0; c < 3; ++c)
+                shifted[(std::size_t(y) * width + x) * 3 + c] = pixels[(std::size_t(y) * width + (x + width / 4) % width) * 3 + c];
+
+    Imath::V3d z;
+    rotationY(90).multDirMatrix(Imath::V3d(0, 0, 1), z);
+    ASSERT_NEAR((z - Imath::V3d(1, 0, 0)).length(), 0.0, 1e-12);  // +Z -> +X
+
+    auto asset = std::make_shared<TranslucentAsset>();
+    test::makeCubeSphere(*asset, 2, 1.0f);
+    asset->range = EditableRange::coveringPresets();
+    asset->environment = test::environmentTransfer(*asset, 8, 2, [](std::size_t, const Imath::V3f&) { return true; });
+    const auto moments = [&](std::vector<float> map, const Imath::M44d& dome) {
+        MeshIrradiance irradiance(asset, Imath::M44d());
+        irradiance.setLight("/dome", std::make_shared<EnvironmentLight>(
+                                         std::make_shared<LatLongMap>(width, height, std::move(map)), dome, Rgb(1.0)));
+        return irradiance.moments().values;
+    };
+    const std::vector<float> rotated = moments(pixels, rotationY(90));
+    const std::vector<float> shiftedMap = moments(shifted, Imath::M44d());
+    EXPECT_LT(test::maxRelative(rotated, shiftedMap), 1e-5);
+    EXPECT_GT(test::maxRelative(moments(pixels, Imath::M44d()), shiftedMap), 1e-2);  // the rotation matters
+    // A uniform scale on the dome changes nothing.
+    Imath::M44d scaled;
+    scaled.setScale(3.0);
+    EXPECT_LT(test::maxRelative(moments(pixels, scaled * rotationY(90)), shiftedMap), 1e-5);
+}
+
+TEST(EnvironmentLight, RejectsMismatchedTransfer) {
+    const auto asset = hemisphereAsset(4, 2);
+    IrradianceMoments wrongTerms(std::uint32_t(asset->samples.size()), 1);
+    const std::vector<float> radiance(6 * 4 * 4 * 3, 1.0f);
+    EXPECT_THROW(addEnvironmentIrradiance(asset->environment, radiance, wrongTerms), Error);
+    IrradianceMoments moments(std::uint32_t(asset->samples.size()), 2);
+    EXPECT_THROW(addEnvironmentIrradiance(asset->environment, std::span(radiance).first(30), moments), Error);
+}
+
+}  // namespace
+}  // namespace opal

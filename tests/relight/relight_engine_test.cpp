@@ -1,0 +1,141 @@
+#include "delegate/relight_engine.h"
+
+#include "schema/error.h"
+#include "synthetic_asset.h"
+
+#include <gtest/gtest.h>
+
+#include <numbers>
+
+namespace opal {
+namespace {
+
+// A slab of 2 charts of 16 x 16 samples, 0.25 mm apart, with the lossless transfer.
+std::shared_ptr<TranslucentAsset> slabAsset(double keepFraction = 1.0, double energyFraction = 1.0) {
+    auto asset = std::make_shared<TranslucentAsset>();
+    asset->name = "slab";
+    asset->unitsPerMm = 10.0;  // scene units are 0.1 mm
+    test::makeSlab(*asset, 2, 1, 4, 2.5f);
+    asset->defaultMaterial = Material{{1.0, 0.8, 0.6}, {0.05, 0.1, 0.2}, 1.3};
+    asset->range = test::rangeAround(asset->defaultMaterial, 3.0, 1.2, 1.6);
+    asset->basis = test::fitBasis(asset->range, 8, 12.0);
+    test::buildTransfer(*asset, keepFraction, energyFraction);
+    // Each vertex blends two samples.
+    const std::size_t n = asset->samples.size();
+    for (std::size_t v = 0; v < n; ++v) {
+        asset->vertexWeights.offsets.push_back(std::uint32_t(2 * v));
+        asset->vertexWeights.samples.insert(asset->vertexWeights.samples.end(), {std::uint32_t(v), std::uint32_t((v + 1) % n)});
+        asset->vertexWeights.weights.insert(asset->vertexWeights.weights.end(), {0.25f, 0.75f});
+    }
+    asset->vertexWeights.offsets.push_back(std::uint32_t(2 * n));
+    return asset;
+}
+
+// L = (1/pi) sum_k s_k T_k E with the dense T_k and E = sum_m c_m E_m: the direct evaluation.
+std::vector<float> directRadiance(const TranslucentAsset& asset, const Material& material,
+                                  const IrradianceMoments& moments) {
+    const std::size_t n = asset.samples.size();
+    const std::vector<float> e = moments.combine(fresnelMoments(material.eta, int(moments.terms)));
+    const std::array<std::vector<double>, 3> s = asset.basis.project(material);
+    std::vector<double> sum(3 * n, 0.0);
+    for (int k = 0; k < asset.basis.K(); ++k) {
+        const std::vector<double> t = test::denseTransfer(asset, k);
+        for (std::size_t o = 0; o < n; ++o)
+            for (std::size_t i = 0; i < n; ++i)
+                for (int c = 0; c < 3; ++c) sum[3 * o + c] += s[c][k] * t[o * n + i] * e[3 * i + c];
+    }
+    std::vector<float> radiance(3 * n);
+    for (std::size_t j = 0; j < radiance.size(); ++j) radiance[j] = float(sum[j] / std::numbers::pi);
+    return radiance;
+}
+
+TEST(RelightEngine, LosslessTransferMatchesTheDenseProduct) {
+    const auto asset = slabAsset();
+    for (std::uint32_t terms : {1u, 2u, 3u}) {  // 3, 6 and 9 interleaved channels
+        const IrradianceMoments moments = test::randomMoments(std::uint32_t(asset->samples.size()), terms, 11 + terms);
+        RelightEngine engine(asset);
+        engine.setIrradiance(moments);
+        EXPECT_LT(test::maxRelative(engine.sampleRadiance(), directRadiance(*asset, asset->defaultMaterial, moments)),
+                  1e-5)
+            << terms << " terms";
+        EXPECT_LT(test::maxRelative(engine.sampleIrradiance(),
+                                    moments.combine(fresnelMoments(asset->defaultMaterial.eta, int(terms)))),
+                  1e-7);
+    }
+}
+
+TEST(RelightEngine, MaterialEditsEqualAFullRecompute) {
+    const auto asset = slabAsset();
+    const IrradianceMoments moments = test::randomMoments(std::uint32_t(asset->samples.size()), 2, 5);
+    RelightEngine edited(asset);
+    edited.setIrradiance(moments);
+    const Material edits[] = {
+        {{1.4, 0.7, 0.5}, {0.04, 0.12, 0.3}, 1.3},  // sigma only
+        {{1.4, 0.7, 0.5}, {0.04, 0.12, 0.3}, 1.5},  // eta only
+        {{0.6, 1.1, 0.9}, {0.1, 0.06, 0.08}, 1.25}, // both
+        {{0.6, 1.1, 0.9}, {0.02, 0.06, 0.08}, 1.25},
+    };
+    for (const Material& m : edits) {
+        EXPECT_TRUE(edited.setMaterial(m).empty());
+        RelightEngine fresh(asset);
+        fresh.setMaterial(m);
+        fresh.setIrradiance(moments);
+        EXPECT_LT(test::maxRelative(edited.sampleRadiance(), fresh.sampleRadiance()), 1e-5);
+        EXPECT_LT(test::maxRelative(edited.sampleRadiance(), directRadiance(*asset, m, moments)), 1e-5);
+        EXPECT_LT(test::maxRelative(edited.vertexRadiance(), fresh.vertexRadiance()), 1e-5);
+    }
+}
+
+TEST(RelightEngine, ClampsMaterialsToTheEditableRange) {
+    const auto asset = slabAsset();
+    RelightEngine engine(asset);
+    engine.setIrradiance(test::randomMoments(std::uint32_t(asset->samples.size()), 2, 3));
+    const Material outside{{1.0, 0.8, 0.6}, {50.0, 0.1, 0.2}, 2.5};
+    const std::vector<std::string> warnings = engine.setMaterial(outside);
+    EXPECT_EQ(warnings.size(), 2u);  // sigmaA red and eta
+    EXPECT_TRUE(asset->range.contains(engine.material()));
+    const std::vector<float> clamped(engine.sampleRadiance().begin(), engine.sampleRadiance().end());
+    engine.setMaterial(asset->range.clamp(outside, nullptr));
+    EXPECT_EQ(test::maxRelative(engine.sampleRadiance(), clamped), 0.0);
+}
+
+TEST(RelightEngine, VertexRadianceInterpolatesSamples) {
+    const auto asset = slabAsset();
+    RelightEngine engine(asset);
+    engine.setIrradiance(test::randomMoments(std::uint32_t(asset->samples.size()), 2, 9));
+    const std::span<const float> l = engine.sampleRadiance();
+    const std::size_t n = asset->samples.size();
+    ASSERT_EQ(engine.vertexRadiance().size(), 3 * n);
+    for (std::size_t v = 0; v < n; ++v)
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(engine.vertexRadiance()[3 * v + c], 0.25f * l[3 * v + c] + 0.75f * l[3 * ((v + 1) % n) + c],
+                        1e-6f * l[3 * v + c]);
+}
+
+TEST(RelightEngine, LossyTransferStaysCloseToLossless) {
+    const auto lossless = slabAsset(), lossy = slabAsset(0.1, 0.99);
+    std::size_t kept = 0;
+    for (const SparseMatrix& m : lossy->transfer.perBasis) kept += m.nonZeros();
+    const IrradianceMoments moments = test::randomMoments(std::uint32_t(lossless->samples.size()), 2, 21);
+    RelightEngine a(lossless), b(lossy);
+    a.setIrradiance(moments);
+    b.setIrradiance(moments);
+    const double error = test::relativeRmse(b.sampleRadiance(), a.sampleRadiance());
+    std::printf("[ lossy    ] keep 10%% / 99%% energy: %zu of %zu entries, relative RMSE %.4f\n", kept,
+                lossless->samples.size() * lossless->samples.size() * lossless->transfer.perBasis.size(), error);
+    EXPECT_LT(error, 0.03);
+    EXPECT_GT(error, 0.0);
+}
+
+TEST(RelightEngine, RejectsMismatchedInput) {
+    auto asset = slabAsset();
+    RelightEngine engine(asset);
+    EXPECT_THROW(engine.setIrradiance(IrradianceMoments(7, 2)), Error);
+    EXPECT_THROW(engine.setIrradiance(IrradianceMoments(std::uint32_t(asset->samples.size()), 4)), Error);
+    auto broken = std::make_shared<TranslucentAsset>(*asset);
+    broken->transfer.perBasis.pop_back();
+    EXPECT_THROW(RelightEngine{broken}, Error);
+}
+
+}  // namespace
+}  // namespace opal
