@@ -1,0 +1,35 @@
+// The scene's lights (UsdLux, plus Opal's OpalShadowFieldLight) read into the delegate's
+// hd::LightDesc. Every light takes LightAPI's inputs:intensity (>= 0), inputs:exposure,
+// inputs:color (>= 0) and inputs:normalize with USD's fallbacks; then
+//   SphereLight           inputs:radius, treatAsPoint, inputs:shaping:cone:angle and
+//                         inputs:shaping:cone:softness (also spelt shaping:cone:*, as
+//                         before USD 21.05); a cone angle makes it a spot light
+//   DistantLight          inputs:angle; intensity falls back to 50000, as in UsdLux
+//   DomeLight             inputs:texture:file (a lat-long image, anchored at the layer;
+//                         its colorSpace metadata names the image's color space),
+//                         inputs:texture:format "latlong" (or the fallback "automatic")
+//   OpalShadowFieldLight  opal:field (the light asset), passed through to the delegate
+#pragma once
+
+#include "delegate/hd/scene_delegate.h"
+#include "examples/scene/prim_reader.h"
+
+#include <filesystem>
+#include <optional>
+#include <string_view>
+
+namespace opal::scene {
+
+// The delegate prim type and light kind of a USD light type; nullopt for other types.
+struct LightType {
+    hd::Token primType;
+    hd::LightKind kind;
+};
+std::optional<LightType> lightTypeOf(std::string_view usdTypeName);
+
+// Reads the light `reader` describes (its type must be one lightTypeOf knows), placed
+// by `objectToWorld`; files are resolved against `layerFile` and must exist. Throws
+// UsdaError at the attribute at fault.
+hd::LightDesc readLight(PrimReader& reader, const Imath::M44d& objectToWorld, const std::filesystem::path& layerFile);
+
+}  // namespace opal::scene

@@ -1,0 +1,57 @@
+#include "examples/scene/usda_scene_source.h"
+
+#include "schema/error.h"
+#include "schema/usd/usda_error.h"
+
+namespace opal::scene {
+namespace {
+
+template <class Prim>
+const Prim& lookUp(const std::map<hd::SdfPath, Prim>& prims, const hd::SdfPath& id, const Scene& scene,
+                   const char* what) {
+    const auto it = prims.find(id);
+    if (it == prims.end()) throw Error(scene.file.string() + ": no " + what + " prim <" + id + "> in the scene");
+    return it->second;
+}
+
+template <class Insert>
+void insertAt(const usda::SourceLocation& where, const hd::SdfPath& id, Insert&& insert) {
+    try {
+        insert();
+    } catch (const usda::UsdaError&) {
+        throw;
+    } catch (const Error& e) {
+        throw usda::UsdaError(where, "<" + id + ">: " + e.what());
+    }
+}
+
+}  // namespace
+
+void UsdaSceneSource::populate(hd::RenderIndex& index) const {
+    for (const auto& [id, material] : scene_.materials)
+        insertAt(material.where, id, [&] { index.insertSprim(hd::PrimType::Material, *this, id); });
+    for (const auto& [id, camera] : scene_.cameras)
+        insertAt(camera.where, id, [&] { index.insertSprim(hd::PrimType::Camera, *this, id); });
+    for (const auto& [id, light] : scene_.lights)
+        insertAt(light.where, id, [&] { index.insertSprim(light.primType, *this, id); });
+    for (const auto& [id, mesh] : scene_.meshes)
+        insertAt(mesh.where, id, [&] { index.insertRprim(hd::PrimType::TranslucentMesh, *this, id); });
+}
+
+hd::MeshDesc UsdaSceneSource::mesh(const hd::SdfPath& id) const {
+    return lookUp(scene_.meshes, id, scene_, "mesh").desc;
+}
+
+hd::MaterialDesc UsdaSceneSource::material(const hd::SdfPath& id) const {
+    return lookUp(scene_.materials, id, scene_, "Material").desc;
+}
+
+hd::LightDesc UsdaSceneSource::light(const hd::SdfPath& id) const {
+    return lookUp(scene_.lights, id, scene_, "light").desc;
+}
+
+hd::CameraDesc UsdaSceneSource::camera(const hd::SdfPath& id) const {
+    return lookUp(scene_.cameras, id, scene_, "Camera").desc;
+}
+
+}  // namespace opal::scene

@@ -1,0 +1,34 @@
+// The scene delegate of a USDA scene (as UsdImagingDelegate is USD's): it inserts the
+// scene's prims into a render index and answers the prims' pulls during sync with the
+// descriptions readScene produced. The delegate it feeds is reached only through the
+// render index, so any renderer plugin can consume it.
+#pragma once
+
+#include "delegate/hd/render_index.h"
+#include "delegate/hd/scene_delegate.h"
+#include "examples/scene/scene.h"
+
+namespace opal::scene {
+
+class UsdaSceneSource final : public hd::SceneDelegate {
+public:
+    explicit UsdaSceneSource(Scene scene) : scene_(std::move(scene)) {}
+
+    const Scene& scene() const { return scene_; }
+
+    // Inserts every material and camera and light (Sprims), then every mesh (Rprims).
+    // A prim the index refuses (a type the delegate does not support, e.g. a shadow-field
+    // light) throws usda::UsdaError at the prim with the index's message.
+    void populate(hd::RenderIndex& index) const;
+
+    // Each throws opal::Error for a path the scene has no such prim at.
+    hd::MeshDesc mesh(const hd::SdfPath& id) const override;
+    hd::MaterialDesc material(const hd::SdfPath& id) const override;
+    hd::LightDesc light(const hd::SdfPath& id) const override;
+    hd::CameraDesc camera(const hd::SdfPath& id) const override;
+
+private:
+    Scene scene_;
+};
+
+}  // namespace opal::scene

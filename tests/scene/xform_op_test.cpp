@@ -1,0 +1,167 @@
+// xformOp composition against matrices computed by hand (row vectors, p' = p M, as USD and
+// Imath): single ops, the three-axis rotation orders, quaternions, op order, pivots,
+// !resetXformStack! and inheritance from parents.
+#include "examples/scene/xform_op.h"
+#include "examples/scene/xformable.h"
+#include "schema/usd/usda_reader.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+namespace opal::scene {
+namespace {
+
+using Rows = std::array<std::array<double, 4>, 4>;
+
+void expectMatrix(const Imath::M44d& actual, const Rows& expected) {
+    for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c) EXPECT_NEAR(actual[r][c], expected[r][c], 1e-12) << "row " << r << ", column " << c;
+}
+
+Imath::V3d apply(const Imath::V3d& p, const Imath::M44d& m) {
+    Imath::V3d out;
+    m.multVecMatrix(p, out);
+    return out;
+}
+
+void expectPoint(const Imath::V3d& actual, const Imath::V3d& expected) {
+    EXPECT_NEAR(actual.x, expected.x, 1e-12);
+    EXPECT_NEAR(actual.y, expected.y, 1e-12);
+    EXPECT_NEAR(actual.z, expected.z, 1e-12);
+}
+
+// The local transform of prim /A whose body is `body`.
+LocalTransform localOf(const std::string& body) {
+    const usda::Layer layer = usda::readUsda("#usda 1.0\ndef Xform \"A\"\n{\n" + body + "}\n", "xf.usda");
+    PrimReader reader(layer.prim("/A"), "/A");
+    LocalTransform local = readLocalTransform(reader);
+    reader.finish();
+    return local;
+}
+
+std::string errorOf(const std::string& body) {
+    try {
+        localOf(body);
+    } catch (const Error& e) {
+        return e.what();
+    }
+    return "no error";
+}
+
+TEST(XformOp, SingleAxisRotationsTurnCounterClockwise) {
+    // Rx(90): y -> z, z -> -y.
+    expectMatrix(rotateMatrix(0, 90.0), {{{1, 0, 0, 0}, {0, 0, 1, 0}, {0, -1, 0, 0}, {0, 0, 0, 1}}});
+    // Ry(90): z -> x, x -> -z.
+    expectMatrix(rotateMatrix(1, 90.0), {{{0, 0, -1, 0}, {0, 1, 0, 0}, {1, 0, 0, 0}, {0, 0, 0, 1}}});
+    // Rz(90): x -> y, y -> -x.
+    expectMatrix(rotateMatrix(2, 90.0), {{{0, 1, 0, 0}, {-1, 0, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}});
+    // Rz(30): x -> (cos 30, sin 30).
+    const double c = std::sqrt(3.0) / 2.0, s = 0.5;
+    expectMatrix(rotateMatrix(2, 30.0), {{{c, s, 0, 0}, {-s, c, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}});
+}
+
+TEST(XformOp, ThreeAxisRotationsApplyTheirAxesInNameOrder) {
+    // rotateXYZ (90, 0, 90): X first, then Z. x -> x -> y; y -> z -> z; z -> -y -> x.
+    expectMatrix(rotateEulerMatrix(XformOpType::RotateXYZ, {90, 0, 90}),
+                 {{{0, 1, 0, 0}, {0, 0, 1, 0}, {1, 0, 0, 0}, {0, 0, 0, 1}}});
+    // rotateZYX (90, 0, 90): Z first, then X. x -> y -> z; y -> -x -> -x; z -> z -> -y.
+    expectMatrix(rotateEulerMatrix(XformOpType::RotateZYX, {90, 0, 90}),
+                 {{{0, 0, 1, 0}, {-1, 0, 0, 0}, {0, -1, 0, 0}, {0, 0, 0, 1}}});
+    // rotateYXZ (90, 90, 0): Y first, then X. x -> -z -> y; y -> y -> z; z -> x -> x.
+    expectMatrix(rotateEulerMatrix(XformOpType::RotateYXZ, {90, 90, 0}),
+                 {{{0, 1, 0, 0}, {0, 0, 1, 0}, {1, 0, 0, 0}, {0, 0, 0, 1}}});
+}
+
+TEST(XformOp, OrientIsTheQuaternionsRotation) {
+    // 90 degrees about +Y: q = (cos 45, 0, sin 45, 0): z -> x, x -> -z.
+    const double h = std::sqrt(0.5);
+    expectMatrix(orientMatrix(h, {0, h, 0}), {{{0, 0, -1, 0}, {0, 1, 0, 0}, {1, 0, 0, 0}, {0, 0, 0, 1}}});
+    // Not normalized: the same rotation.
+    expectMatrix(orientMatrix(2 * h, {0, 2 * h, 0}), {{{0, 0, -1, 0}, {0, 1, 0, 0}, {1, 0, 0, 0}, {0, 0, 0, 1}}});
+    EXPECT_THROW(orientMatrix(0, {0, 0, 0}), Error);
+}
+
+TEST(XformOp, OpNamesMayCarrySuffixes) {
+    EXPECT_EQ(parseXformOpName("xformOp:rotateXYZ"), XformOpType::RotateXYZ);
+    EXPECT_EQ(parseXformOpName("xformOp:translate:pivot"), XformOpType::Translate);
+    EXPECT_EQ(parseXformOpName("xformOp:rotateX:orientToStageUpAxis"), XformOpType::RotateX);
+    EXPECT_EQ(parseXformOpName("xformOp:shear"), std::nullopt);
+    EXPECT_EQ(parseXformOpName("xformOp:translate:"), std::nullopt);
+    EXPECT_EQ(parseXformOpName("translate"), std::nullopt);
+}
+
+TEST(Xformable, OrderListsOpsOutermostFirst) {
+    // translate (1, 2, 3), rotateZ 90, scale 2: a point is scaled, rotated, then moved.
+    // By hand: S Rz T = [[0, 2, 0], [-2, 0, 0], [0, 0, 2]] with translation (1, 2, 3).
+    const LocalTransform local = localOf(
+        "    double3 xformOp:translate = (1, 2, 3)\n"
+        "    float xformOp:rotateZ = 90\n"
+        "    float3 xformOp:scale = (2, 2, 2)\n"
+        "    uniform token[] xformOpOrder = [\"xformOp:translate\", \"xformOp:rotateZ\", \"xformOp:scale\"]\n");
+    expectMatrix(local.matrix, {{{0, 2, 0, 0}, {-2, 0, 0, 0}, {0, 0, 2, 0}, {1, 2, 3, 1}}});
+    expectPoint(apply({1, 0, 0}, local.matrix), {1, 4, 3});
+    EXPECT_FALSE(local.resetsXformStack);
+}
+
+TEST(Xformable, ReversedOrderMovesFirst) {
+    // scale, rotateZ, translate listed: translate first, then rotate, then scale.
+    const LocalTransform local = localOf(
+        "    double3 xformOp:translate = (1, 2, 3)\n"
+        "    float xformOp:rotateZ = 90\n"
+        "    float3 xformOp:scale = (2, 2, 2)\n"
+        "    uniform token[] xformOpOrder = [\"xformOp:scale\", \"xformOp:rotateZ\", \"xformOp:translate\"]\n");
+    // (1, 0, 0) -> (2, 2, 3) -> (-2, 2, 3) -> (-4, 4, 6).
+    expectPoint(apply({1, 0, 0}, local.matrix), {-4, 4, 6});
+}
+
+TEST(Xformable, TransformOpIsTheMatrixAsWritten) {
+    const LocalTransform local = localOf(
+        "    matrix4d xformOp:transform = ( (0, 0, -1, 0), (0, 1, 0, 0), (1, 0, 0, 0), (5, 6, 7, 1) )\n"
+        "    uniform token[] xformOpOrder = [\"xformOp:transform\"]\n");
+    expectMatrix(local.matrix, {{{0, 0, -1, 0}, {0, 1, 0, 0}, {1, 0, 0, 0}, {5, 6, 7, 1}}});
+}
+
+TEST(Xformable, InvertedPivotRotatesAboutThePivot) {
+    const LocalTransform local = localOf(
+        "    double3 xformOp:translate:pivot = (1, 0, 0)\n"
+        "    float xformOp:rotateY = 90\n"
+        "    uniform token[] xformOpOrder = [\"xformOp:translate:pivot\", \"xformOp:rotateY\", "
+        "\"!invert!xformOp:translate:pivot\"]\n");
+    expectPoint(apply({1, 0, 0}, local.matrix), {1, 0, 0});   // the pivot stays
+    expectPoint(apply({2, 0, 0}, local.matrix), {1, 0, -1});  // (1,0,0) about it -> (0,0,-1)
+}
+
+TEST(Xformable, ResetXformStackIsReported) {
+    const LocalTransform local = localOf(
+        "    double3 xformOp:translate = (1, 0, 0)\n"
+        "    uniform token[] xformOpOrder = [\"!resetXformStack!\", \"xformOp:translate\"]\n");
+    EXPECT_TRUE(local.resetsXformStack);
+    expectPoint(apply({0, 0, 0}, local.matrix), {1, 0, 0});
+}
+
+TEST(Xformable, NoOrderIsIdentity) { expectMatrix(localOf("").matrix, {{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}}); }
+
+TEST(Xformable, ErrorsNameTheAttribute) {
+    EXPECT_EQ(errorOf("    double3 xformOp:translate = (1, 2, 3)\n"),
+              "xf.usda:4:5: Xform </A>: 'xformOp:translate' is not listed in xformOpOrder (USD would ignore it)");
+    EXPECT_EQ(errorOf("    uniform token[] xformOpOrder = [\"xformOp:translate\"]\n"),
+              "xf.usda:4:5: Xform </A>: attribute 'xformOpOrder' lists 'xformOp:translate', which the prim does not "
+              "author with a value");
+    EXPECT_EQ(errorOf("    double xformOp:translate = 1\n    uniform token[] xformOpOrder = [\"xformOp:translate\"]\n"),
+              "xf.usda:4:5: Xform </A>: attribute 'xformOp:translate' has type double, expected float3 or double3");
+    EXPECT_EQ(errorOf("    uniform token[] xformOpOrder = [\"xformOp:shear\"]\n"),
+              "xf.usda:4:5: Xform </A>: attribute 'xformOpOrder' lists 'xformOp:shear', which is not an xformOp name "
+              "(see examples/SCENES.md)");
+    EXPECT_EQ(errorOf("    float xformOp:rotateX = 1\n"
+                      "    uniform token[] xformOpOrder = [\"xformOp:rotateX\", \"xformOp:rotateX\"]\n"),
+              "xf.usda:5:5: Xform </A>: attribute 'xformOpOrder' lists 'xformOp:rotateX' twice");
+    EXPECT_EQ(errorOf("    float3 xformOp:scale = (0, 1, 1)\n"
+                      "    uniform token[] xformOpOrder = [\"!invert!xformOp:scale\"]\n"),
+              "xf.usda:4:5: Xform </A>: attribute 'xformOp:scale' is singular and cannot be inverted "
+              "(!invert!xformOp:scale)");
+}
+
+}  // namespace
+}  // namespace opal::scene
