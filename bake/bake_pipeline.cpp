@@ -11,6 +11,7 @@
 #include "bake/surface_sampler.h"
 #include "bake/vertex_weights.h"
 #include "schema/asset/asset_layer.h"
+#include "schema/asset/cube_map.h"
 #include "schema/asset/sidecar.h"
 #include "schema/asset/transfer_apply.h"
 
@@ -100,6 +101,13 @@ TranslucentAsset bakeAsset(const BakeOptions& options, ProgressSink* progress, c
     asset.range = options.range.value_or(EditableRange::coveringPresets());
     asset.range.validate("editable range");
     asset.defaultMaterial = defaultMaterial(options, asset.range, &r.warnings);
+    asset.layout = chartLayoutForSampleCount(options.samples);  // a bad count fails before any work
+    try {  // the visibility stage comes last: refuse its settings before the long stages run
+        (void)CubeMapLayout(options.visibility.cubeFaceSize);
+    } catch (const Error& e) {
+        throw Error(std::string("--env-res: ") + e.what());
+    }
+    if (options.visibility.terms == 0) throw Error("--env-terms must be at least 1");
 
     ControlMesh control = loadControlMesh(options, &r.warnings);
     const ValidationReport validation = validateAndRepair(control);
@@ -117,7 +125,6 @@ TranslucentAsset bakeAsset(const BakeOptions& options, ProgressSink* progress, c
     clock.lap("subdivide");
     cancel.throwIfRequested();
 
-    asset.layout = chartLayoutForSampleCount(options.samples);
     {
         StageScope stage(progress, "sample + parameterize", 3);
         SurfaceSampling sampling = sampleSurface(asset.mesh, options.samples, SamplingOptions{options.seed, 5});

@@ -104,7 +104,7 @@ EditableRange parseEditableRange(const std::string& text) {
         else if (name == "eta") range.etaMin = lo, range.etaMax = hi;
         else throw Error("'" + part + "': unknown parameter '" + name + "' (sigmaS, sigmaA or eta)");
     }
-    range.validate("--range");
+    range.validate("editable range");  // the caller names the option
     return range;
 }
 

@@ -69,12 +69,10 @@ EnvironmentTransfer buildEnvironmentTransfer(const RenderMesh& mesh, std::span<c
     EnvironmentTransfer out;
     out.cubeFaceSize = settings.cubeFaceSize;
     out.fresnelTerms = M;
-    const std::size_t rows = samples.size() * M;
-    out.offsets.resize(rows + 1);
-    for (std::size_t r = 0; r <= rows; ++r) out.offsets[r] = std::uint32_t(r * kept);
-    out.indices.resize(rows * kept);
-    out.values.resize(rows * kept);
-
+    // Per sample, the kept positions (fewer than `kept` when the vector has fewer nonzero
+    // coefficients: a sample facing a wall) and their values for every m.
+    std::vector<SparseVector> top(samples.size());
+    std::vector<std::vector<float>> values(samples.size());
     StageScope stage(progress, "environment visibility", samples.size());
     tbb::enumerable_thread_specific<std::vector<float>> scratch([&] { return std::vector<float>(M * texels); });
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, samples.size(), 16), [&](const auto& range) {
@@ -84,17 +82,22 @@ EnvironmentTransfer buildEnvironmentTransfer(const RenderMesh& mesh, std::span<c
             transportVectors(samples[i], scene, directions, M, offset, vectors);
             for (std::uint32_t m = 0; m < M; ++m)
                 haarForwardCharts(std::span<float>(vectors.data() + m * texels, texels), faces);
-            const SparseVector top = keepLargest(std::span<const float>(vectors.data(), texels), kept);
-            for (std::uint32_t m = 0; m < M; ++m) {
-                const std::size_t base = (i * M + m) * kept;
-                for (std::size_t e = 0; e < top.size(); ++e) {
-                    out.indices[base + e] = top.indices[e];
-                    out.values[base + e] = vectors[m * texels + top.indices[e]];
-                }
-            }
+            top[i] = keepLargest(std::span<const float>(vectors.data(), texels), kept);
+            for (std::uint32_t m = 0; m < M; ++m)
+                for (std::uint32_t index : top[i].indices) values[i].push_back(vectors[m * texels + index]);
         }
         stage.advance(range.size());
     });
+
+    // CSR over (sample * M + m); every m of a sample shares the sample's positions.
+    out.offsets.assign(1, 0);
+    for (std::size_t i = 0; i < samples.size(); ++i)
+        for (std::uint32_t m = 0; m < M; ++m) {
+            const std::size_t count = top[i].size();
+            out.indices.insert(out.indices.end(), top[i].indices.begin(), top[i].indices.end());
+            out.values.insert(out.values.end(), values[i].begin() + m * count, values[i].begin() + (m + 1) * count);
+            out.offsets.push_back(std::uint32_t(out.indices.size()));
+        }
     return out;
 }
 

@@ -16,5 +16,6 @@ struct Subcommand {
 };
 
 Subcommand basisSubcommand();
+Subcommand bakeSubcommand();
 
 }  // namespace opal::bench

@@ -67,7 +67,9 @@ int main(int argc, char** argv) {
         app.parse(argc, argv);
         if (!range.empty() && range != "presets") options.range = parseRange(range);
     } catch (const CLI::ParseError& e) {
-        return app.exit(e);
+        // app.exit prints the message; CLI11's own codes (105 for a failed check, 106 for a
+        // missing option, ...) would break the documented contract: bad arguments exit 2.
+        return app.exit(e) == 0 ? 0 : 2;  // --help exits 0
     } catch (const opal::Error& e) {
         std::fprintf(stderr, "opal-bake: --range: %s\n", e.what());
         return 2;
