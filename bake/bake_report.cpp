@@ -1,6 +1,6 @@
 #include "bake/bake_report.h"
 
-#include "schema/asset/atomic_file.h"
+#include "schema/usd/atomic_file.h"
 
 #include <nlohmann/json.hpp>
 

@@ -5,7 +5,7 @@
 // matrix is compressed directly from its vectors.
 #pragma once
 
-#include "schema/asset/atomic_file.h"
+#include "schema/usd/atomic_file.h"
 #include "schema/asset/chunk_format.h"
 #include "schema/asset/xxhash64.h"
 

@@ -1,6 +1,6 @@
 #include "schema/asset/chunked_file.h"
 
-#include "schema/asset/atomic_file.h"
+#include "schema/usd/atomic_file.h"
 #include "schema/asset/little_endian.h"
 #include "schema/asset/xxhash64.h"
 #include "schema/error.h"

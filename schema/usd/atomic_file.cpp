@@ -3,93 +3,119 @@
 #include "schema/error.h"
 
 #include <cerrno>
-#include <cstdio>
 #include <cstring>
-#include <fcntl.h>
 #include <random>
+#include <sstream>
 #include <string>
+
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace opal {
 namespace {
 
-[[noreturn]] void fail(const std::filesystem::path& path, const std::string& what, int err) {
-    throw opal::Error(path.string() + ": cannot write file: " + what + ": " + std::strerror(err));
+constexpr std::size_t kBufferBytes = 1 << 20;
+
+std::filesystem::path temporaryPathFor(const std::filesystem::path& target) {
+    std::random_device device;
+    std::uint64_t random = (std::uint64_t(device()) << 32) ^ device();
+    std::ostringstream name;
+    name << target.filename().string() << ".tmp-" << ::getpid() << '-' << std::hex << random;
+    return target.parent_path() / name.str();
 }
 
-std::filesystem::path temporaryBeside(const std::filesystem::path& path) {
-    std::random_device entropy;
-    std::uniform_int_distribution<unsigned long long> digits;
-    char suffix[20];
-    std::snprintf(suffix, sizeof suffix, "%016llx", digits(entropy));
-    std::filesystem::path tmp = path;
-    tmp += std::string(".tmp-") + suffix;
-    return tmp;
-}
+std::string errnoText() { return std::strerror(errno); }
 
-// Opens a new temporary file (O_EXCL, mode 0666 & ~umask).
-int openTemporary(const std::filesystem::path& path, std::filesystem::path& tmp) {
-    for (int attempt = 0; attempt < 8; ++attempt) {
-        tmp = temporaryBeside(path);
-        int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-        if (fd >= 0) {
-            return fd;
-        }
-        if (errno != EEXIST) {
-            fail(path, "creating temporary file '" + tmp.string() + "'", errno);
-        }
-    }
-    fail(path, "creating a temporary file", EEXIST);
-}
-
-void writeAll(int fd, std::string_view bytes, const std::filesystem::path& path) {
-    while (!bytes.empty()) {
-        ssize_t n = ::write(fd, bytes.data(), bytes.size());
-        if (n < 0 && errno == EINTR) {
-            continue;
-        }
-        if (n <= 0) {
-            fail(path, "writing", n < 0 ? errno : EIO);
-        }
-        bytes.remove_prefix(static_cast<std::size_t>(n));
-    }
-}
-
-// Makes the rename itself durable. Best effort: the file is complete either way.
-void syncDirectory(const std::filesystem::path& path) {
-    std::filesystem::path dir = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+// fsync of a directory makes the rename durable; some file systems refuse it (EINVAL),
+// which only means they give no such guarantee.
+bool syncDirectory(const std::filesystem::path& directory) {
+    std::filesystem::path dir = directory.empty() ? std::filesystem::path(".") : directory;
     int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-    if (fd >= 0) {
-        ::fsync(fd);
-        ::close(fd);
-    }
+    if (fd < 0) return false;
+    bool ok = ::fsync(fd) == 0 || errno == EINVAL;
+    ::close(fd);
+    return ok;
 }
 
 }  // namespace
 
+AtomicFileWriter::AtomicFileWriter(std::filesystem::path target)
+    : target_(std::move(target)), temporary_(temporaryPathFor(target_)) {
+    fd_ = ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd_ < 0) fail("cannot create the temporary file");
+    buffer_.reserve(kBufferBytes);
+}
+
+AtomicFileWriter::~AtomicFileWriter() {
+    if (fd_ >= 0) ::close(fd_);
+    if (!committed_) ::unlink(temporary_.c_str());
+}
+
+void AtomicFileWriter::fail(const char* what) const {
+    std::string reason = errnoText();
+    throw Error(target_.string() + ": " + what + " '" + temporary_.string() + "': " + reason);
+}
+
+void AtomicFileWriter::writeAll(std::span<const std::byte> bytes, std::uint64_t offset) {
+    while (!bytes.empty()) {
+        ssize_t n = ::pwrite(fd_, bytes.data(), bytes.size(), static_cast<off_t>(offset));
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) fail("cannot write the temporary file");
+        bytes = bytes.subspan(static_cast<std::size_t>(n));
+        offset += static_cast<std::uint64_t>(n);
+    }
+}
+
+void AtomicFileWriter::flush() {
+    writeAll(buffer_, flushedSize_);
+    flushedSize_ = size_;
+    buffer_.clear();
+}
+
+void AtomicFileWriter::append(std::span<const std::byte> bytes) {
+    if (buffer_.size() + bytes.size() > kBufferBytes) flush();
+    if (bytes.size() >= kBufferBytes) {
+        writeAll(bytes, flushedSize_);
+        size_ += bytes.size();
+        flushedSize_ = size_;
+        return;
+    }
+    buffer_.insert(buffer_.end(), bytes.begin(), bytes.end());
+    size_ += bytes.size();
+}
+
+void AtomicFileWriter::overwrite(std::uint64_t offset, std::span<const std::byte> bytes) {
+    if (offset + bytes.size() > size_)
+        throw Error(target_.string() + ": internal error: overwrite beyond the bytes written");
+    flush();
+    writeAll(bytes, offset);
+}
+
+void AtomicFileWriter::commit() {
+    flush();
+    if (::fsync(fd_) != 0) fail("cannot fsync the temporary file");
+    int fd = fd_;
+    fd_ = -1;
+    if (::close(fd) != 0) fail("cannot close the temporary file");
+    if (::rename(temporary_.c_str(), target_.c_str()) != 0)
+        fail("cannot rename into place the temporary file");
+    committed_ = true;
+    if (!syncDirectory(target_.parent_path()))
+        throw Error(target_.string() + ": written, but cannot fsync its directory: " + errnoText());
+}
+
 void writeFileAtomically(const std::filesystem::path& path, std::string_view bytes) {
-    std::filesystem::path tmp;
-    int fd = openTemporary(path, tmp);
     try {
-        writeAll(fd, bytes, path);
-        if (::fsync(fd) != 0) {
-            fail(path, "flushing to disk", errno);
-        }
-        if (::close(fd) != 0) {
-            fd = -1;
-            fail(path, "closing", errno);
-        }
-        fd = -1;
-        if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-            fail(path, "renaming '" + tmp.string() + "' over it", errno);
-        }
-        syncDirectory(path);
-    } catch (...) {
-        if (fd >= 0) {
-            ::close(fd);
-        }
-        ::unlink(tmp.c_str());
-        throw;
+        AtomicFileWriter out(path);
+        out.append(std::as_bytes(std::span(bytes.data(), bytes.size())));
+        out.commit();
+    } catch (const Error& e) {
+        // "<path>: cannot write file: <what the writer says, without its own path prefix>"
+        const std::string prefix = path.string() + ": ";
+        std::string what = e.what();
+        if (what.starts_with(prefix)) what.erase(0, prefix.size());
+        throw Error(prefix + "cannot write file: " + what);
     }
 }
 
