@@ -1,6 +1,7 @@
 #include "bake/mesh_import.h"
 
 #include "bake/mesh_file_census.h"
+#include "bake/usda_mesh_import.h"
 #include "schema/error.h"
 
 #include <assimp/Importer.hpp>
@@ -16,6 +17,7 @@ namespace opal {
 namespace {
 
 constexpr std::array<const char*, 5> kAssimpExtensions = {".obj", ".ply", ".gltf", ".glb", ".stl"};
+constexpr const char* kUsdaExtension = ".usda";
 
 std::string lowercaseExtension(const std::filesystem::path& path) {
     std::string ext = path.extension().string();
@@ -139,7 +141,7 @@ ImportedMesh importWithAssimp(const std::filesystem::path& path) {
     appendNode(*scene, *scene->mRootNode, aiMatrix4x4(), builder);
     std::size_t skipped = builder.skippedPrimitives();
     bool droppedPartialUvs = builder.droppedPartialUvs();
-    ImportedMesh result{builder.finish(), {}};
+    ImportedMesh result{builder.finish(), {}, std::nullopt, std::nullopt};
     checkPlausible(path, census, result.mesh, skipped);
     if (skipped > 0) {
         result.warnings.push_back("skipped " + std::to_string(skipped) +
@@ -166,15 +168,14 @@ std::string supportedMeshExtensions() {
         if (!list.empty()) list += ' ';
         list += ext;
     }
-    return list;
+    return list + ' ' + kUsdaExtension;
 }
 
 ImportedMesh importMesh(const std::filesystem::path& path) {
     checkReadable(path);
     std::string ext = lowercaseExtension(path);
     if (readByAssimp(ext)) return importWithAssimp(path);
-    // Extension point: USDA meshes (schema/usd's reader) are dispatched here once it can
-    // return a Mesh prim's points, faceVertexCounts and faceVertexIndices.
+    if (ext == kUsdaExtension) return importUsdaMesh(path);
     throw Error(path.string() + ": unsupported mesh format '" + ext + "'; supported: " +
                 supportedMeshExtensions());
 }

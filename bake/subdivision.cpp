@@ -60,7 +60,9 @@ std::unique_ptr<Far::TopologyRefiner> createRefiner(const ControlMesh& mesh, Sub
 
     Sdc::Options sdcOptions;
     sdcOptions.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER);
-    Sdc::SchemeType type = scheme == SubdivisionScheme::Loop ? Sdc::SCHEME_LOOP : Sdc::SCHEME_CATMARK;
+    Sdc::SchemeType type = scheme == SubdivisionScheme::Loop       ? Sdc::SCHEME_LOOP
+                           : scheme == SubdivisionScheme::Bilinear ? Sdc::SCHEME_BILINEAR
+                                                                   : Sdc::SCHEME_CATMARK;
     using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
     std::unique_ptr<Far::TopologyRefiner> refiner(Factory::Create(descriptor, Factory::Options(type, sdcOptions)));
     if (!refiner) {
@@ -129,6 +131,15 @@ void setLimitPointsAndNormals(const Far::TopologyRefiner& refiner, const std::ve
     });
 }
 
+// Bilinear refinement leaves the points on the control polygons: they are the surface.
+void setFlatPointsAndNormals(const std::vector<RefinedPoint>& refined, RenderMesh& out) {
+    out.points.resize(refined.size());
+    for (std::size_t v = 0; v < refined.size(); ++v) out.points[v] = Imath::V3f(refined[v].vec());
+    std::vector<Imath::V3d> sums = faceNormalSums(out);
+    out.normals.resize(refined.size());
+    for (std::size_t v = 0; v < refined.size(); ++v) out.normals[v] = Imath::V3f(sums[v].normalized());
+}
+
 }  // namespace
 
 SubdivisionScheme parseSubdivisionScheme(std::string_view name) {
@@ -143,6 +154,7 @@ std::string_view subdivisionSchemeName(SubdivisionScheme scheme) {
     case SubdivisionScheme::Automatic: return "auto";
     case SubdivisionScheme::CatmullClark: return "catmullClark";
     case SubdivisionScheme::Loop: return "loop";
+    case SubdivisionScheme::Bilinear: return "bilinear";
     }
     return "auto";
 }
@@ -175,7 +187,11 @@ RenderMesh subdivide(const ControlMesh& mesh, const SubdivisionOptions& options)
     std::vector<RefinedPoint> refined = refinePositions(*refiner, mesh);
     RenderMesh out;
     copyFaces(refiner->GetLevel(refiner->GetMaxLevel()), out);
-    setLimitPointsAndNormals(*refiner, refined, out);
+    if (scheme == SubdivisionScheme::Bilinear) {
+        setFlatPointsAndNormals(refined, out);
+    } else {
+        setLimitPointsAndNormals(*refiner, refined, out);
+    }
     return out;
 }
 

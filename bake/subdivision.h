@@ -15,6 +15,8 @@ enum class SubdivisionScheme {
     Automatic,     // Loop when every face is a triangle, else Catmull-Clark
     CatmullClark,  // quads (any polygon in; quads out)
     Loop,          // triangles only
+    Bilinear,      // flat: faces are split, never smoothed. Only from a file's own scheme
+                   // (USD "bilinear" or "none"), not a --scheme choice.
 };
 
 struct SubdivisionOptions {
@@ -33,7 +35,9 @@ SubdivisionScheme resolveSubdivisionScheme(const ControlMesh& mesh, SubdivisionS
 
 // Refines a validated control mesh (see validateAndRepair). Boundaries interpolate edges
 // and corners. Normals are unit, normalize(dP/du x dP/dv), which points to the side the
-// faces wind counter-clockwise around: outward for a validated closed mesh. Throws
+// faces wind counter-clockwise around: outward for a validated closed mesh. Bilinear
+// keeps the refined points on the control polygons and gives each vertex the normalized
+// area-weighted normal of its faces (a flat surface has no limit normal at its edges). Throws
 // opal::Error for a bad level or when OpenSubdiv rejects the topology.
 RenderMesh subdivide(const ControlMesh& mesh, const SubdivisionOptions& options);
 

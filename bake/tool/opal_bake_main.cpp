@@ -44,7 +44,9 @@ int main(int argc, char** argv) {
     bool quiet = false;
     app.add_option("input", options.input, "mesh file (.obj .ply .gltf .glb .stl .usda) or builtin:candle")->required();
     app.add_option("-o,--output", outStem, "output stem: writes STEM.usda and STEM.opal")->required();
-    app.add_option("--scheme", options.scheme, "subdivision scheme")
+    app.add_option("--scheme", options.scheme,
+                   "subdivision scheme; auto: a .usda's subdivisionScheme, else loop for all-triangle meshes, "
+                   "else catmullClark")
         ->check(CLI::IsMember({"auto", "catmullClark", "loop"}));
     app.add_option("--level", options.level, "uniform subdivision level")->check(CLI::Range(0, 6));
     app.add_option("--samples", options.samples, "surface samples N = M x 4^n (e.g. 16384 = 4 x 64 x 64)");

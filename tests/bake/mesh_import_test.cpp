@@ -210,7 +210,7 @@ TEST_F(MeshImport, RefusesMissingFileAndUnknownFormat) {
     fs::path missing = dir_ / "nowhere.obj";
     EXPECT_EQ(errorOf(missing), missing.string() + ": no such file");
     fs::path xyz = write("points.xyz", "0 0 0\n");
-    EXPECT_EQ(errorOf(xyz), xyz.string() + ": unsupported mesh format '.xyz'; supported: .obj .ply .gltf .glb .stl");
+    EXPECT_EQ(errorOf(xyz), xyz.string() + ": unsupported mesh format '.xyz'; supported: .obj .ply .gltf .glb .stl .usda");
     EXPECT_TRUE(contains(errorOf(dir_), "not a regular file"));
 }
 
