@@ -23,6 +23,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <sstream>
 
 namespace opal {
 
@@ -46,11 +47,38 @@ private:
     Clock::time_point start_;
 };
 
-ControlMesh loadControlMesh(const BakeOptions& options, std::vector<std::string>* warnings) {
-    if (options.input == kBuiltinCandle) return makeCandle();
+// A file's own scale (USDA metersPerUnit) is reported, never applied: --units-per-mm
+// alone sets the units, whatever the input format.
+void reportFileUnits(const BakeOptions& options, std::optional<double> metersPerUnit,
+                     std::vector<std::string>* warnings) {
+    if (!metersPerUnit) return;
+    const double fileUnitsPerMm = 0.001 / *metersPerUnit;
+    if (std::abs(fileUnitsPerMm - options.unitsPerMm) <= 1e-6 * options.unitsPerMm) return;
+    std::ostringstream s;
+    s << options.input << ": the layer's metersPerUnit " << *metersPerUnit << " means " << fileUnitsPerMm
+      << " units per mm, but --units-per-mm is " << options.unitsPerMm << "; the bake uses --units-per-mm";
+    warnings->push_back(s.str());
+}
+
+ImportedMesh loadControlMesh(const BakeOptions& options, std::vector<std::string>* warnings) {
+    if (options.input == kBuiltinCandle) return ImportedMesh{makeCandle(), {}, std::nullopt, std::nullopt};
     ImportedMesh imported = importMesh(options.input);
     warnings->insert(warnings->end(), imported.warnings.begin(), imported.warnings.end());
-    return std::move(imported.mesh);
+    reportFileUnits(options, imported.metersPerUnit, warnings);
+    return imported;
+}
+
+// --scheme wins; "auto" takes the scheme the file authors, if any, else the mesh's own rule.
+SubdivisionScheme chooseScheme(const BakeOptions& options, const ControlMesh& control,
+                               std::optional<SubdivisionScheme> authored) {
+    const SubdivisionScheme requested = parseSubdivisionScheme(options.scheme);
+    if (requested != SubdivisionScheme::Automatic || !authored) return resolveSubdivisionScheme(control, requested);
+    try {
+        return resolveSubdivisionScheme(control, *authored);
+    } catch (const Error& e) {
+        throw Error(std::string(e.what()) + " (the file's subdivisionScheme asks for " +
+                    std::string(subdivisionSchemeName(*authored)) + "; --scheme overrides it)");
+    }
 }
 
 Imath::Box3f bounds(const RenderMesh& mesh) {
@@ -109,14 +137,15 @@ TranslucentAsset bakeAsset(const BakeOptions& options, ProgressSink* progress, c
     }
     if (options.visibility.terms == 0) throw Error("--env-terms must be at least 1");
 
-    ControlMesh control = loadControlMesh(options, &r.warnings);
+    ImportedMesh imported = loadControlMesh(options, &r.warnings);
+    ControlMesh& control = imported.mesh;
     const ValidationReport validation = validateAndRepair(control);
     r.warnings.insert(r.warnings.end(), validation.warnings.begin(), validation.warnings.end());
     clock.lap("import");
     cancel.throwIfRequested();
 
     SubdivisionOptions subdivision;
-    subdivision.scheme = resolveSubdivisionScheme(control, parseSubdivisionScheme(options.scheme));
+    subdivision.scheme = chooseScheme(options, control, imported.authoredScheme);
     subdivision.level = int(options.level);
     {
         StageScope stage(progress, "subdivide", 1);
@@ -210,8 +239,12 @@ double measureTransferError(const TranslucentAsset& asset, std::uint64_t seed) {
     for (int c = 0; c < 3; ++c) compressed[c] = applyTransfer(asset.transfer, asset.layout, s[c], irradiance);
 
     // The exact sum_k s_k sum_i b_k(|x_o - x_i|) A_i E_i at each output of the subset.
+    // The diagonal T_k[o][o] integrates b_k over the sample's own disk, as the bake does.
     const int K = asset.basis.K();
     const double toMm = 1.0 / asset.unitsPerMm;
+    std::vector<float> subsetAreas(subset.size());
+    for (std::size_t q = 0; q < subset.size(); ++q) subsetAreas[q] = float(asset.samples[subset[q]].area * toMm * toMm);
+    const std::vector<float> self = transferSelfTerms(subsetAreas, asset.basis);
     std::vector<std::array<double, 3>> exact(subset.size());
     tbb::parallel_for(std::size_t(0), subset.size(), [&](std::size_t q) {
         const std::size_t o = subset[q];
@@ -219,7 +252,11 @@ double measureTransferError(const TranslucentAsset& asset, std::uint64_t seed) {
         std::array<double, 3> sum{0.0, 0.0, 0.0};
         for (std::size_t i = 0; i < n; ++i) {
             lookup.evaluate(float((asset.samples[i].position - asset.samples[o].position).length() * toMm), b.data());
-            const double weight = asset.samples[i].area * toMm * toMm * irradiance[i];
+            double weight = asset.samples[i].area * toMm * toMm * irradiance[i];
+            if (i == o) {
+                for (int k = 0; k < K; ++k) b[std::size_t(k)] = self[q * std::size_t(K) + std::size_t(k)];
+                weight = irradiance[i];
+            }
             for (int c = 0; c < 3; ++c) {
                 double profile = 0.0;
                 for (int k = 0; k < K; ++k) profile += s[c][std::size_t(k)] * b[std::size_t(k)];

@@ -3,10 +3,15 @@
 // basis functions k, computed row by row and compressed in two steps without ever holding
 // the dense N x N matrix:
 //   step 1 (light dimension, w0): each row of T_k, laid out on the chart grid, is Haar
-//          transformed and its largest `keepFraction` coefficients kept;
+//          transformed and its `keepFraction` most important coefficients kept, ranked
+//          by |c_j| times the area the basis function covers (transfer_builder.cpp);
 //   step 2 (spatial dimension, w1): every column of the retained matrix is transformed
 //          along the output dimension with CDF 9/7 and the coefficients that carry
 //          `energyFraction` of the matrix energy are kept.
+// The diagonal is the exception to point quadrature: a sample gathers its own light over
+// its own area, T_k[o][o] = integral over the disk of area A_o of b_k (transferSelfTerms);
+// b_k(0) A_o would weigh the profile's peak by the whole area and brighten coarse samplings
+// several times over.
 // The result is ^{w1}T_k^{w0^-1}, one sparse matrix per k (rows: 9/7 coefficients of the
 // output, columns: Haar coefficients of the light).
 #pragma once
@@ -16,6 +21,7 @@
 
 #include <cstdint>
 #include <span>
+#include <vector>
 
 namespace opal {
 
@@ -31,6 +37,10 @@ struct TransferStats {
     std::uint64_t step2NonZeros = 0;
     double energyKept = 1.0;       // step 2 energy kept, over all k
 };
+
+// T_k[o][o] = integral_0^rho b_k(r) 2 pi r dr with rho = sqrt(A_o / pi), for sample areas
+// in mm^2: areas.size() x K values, sample-major.
+std::vector<float> transferSelfTerms(std::span<const float> areasMm2, const ProfileBasis& basis);
 
 // samples are in grid order (layout.cells() of them), positions in scene units.
 CompressedTransfer buildTransfer(std::span<const SurfaceSample> samples, const ChartLayout& layout,

@@ -59,11 +59,16 @@ std::vector<float> referenceGather(const TranslucentAsset& asset, const Material
             const Imath::V3d xo(asset.samples[o].position);
             double sum[3] = {0.0, 0.0, 0.0};
             for (std::size_t i = 0; i < n; ++i) {
+                if (i == o) continue;
                 const SurfaceSample& s = asset.samples[i];
                 const double r2 = (Imath::V3d(s.position) - xo).length2() * toMm * toMm;  // mm^2
                 const double area = s.area * toMm * toMm;                                   // mm^2
                 for (int c = 0; c < 3; ++c) sum[c] += profile[c](r2) * area * irradiance[3 * i + c];
             }
+            // The sample's own light, gathered over its own disk (DESIGN.md s.5, as the bake).
+            const double radius = std::sqrt(asset.samples[o].area / std::numbers::pi) * toMm;
+            for (int c = 0; c < 3; ++c)
+                sum[c] += dipoleDiskReflectance(radius, material.channel(c)) * irradiance[3 * o + c];
             for (int c = 0; c < 3; ++c) radiance[3 * j + c] = float(sum[c] / std::numbers::pi);
         }
     });

@@ -23,6 +23,27 @@ double poleTerm(double r, double z, double sigmaTr) {
     return z * (sigmaTr + 1.0 / d) * std::exp(-sigmaTr * d) / (d * d);
 }
 
+// integral_0^rho z (sigma_tr + 1/d) e^{-sigma_tr d}/d^2 r dr, one pole: with d dd = r dr
+// the integrand is -d/dd (z e^{-sigma_tr d}/d).
+double poleDiskIntegral(double rho, double z, double sigmaTr) {
+    const double d = std::hypot(rho, z);
+    const double far = std::isinf(rho) ? 0.0 : z * std::exp(-sigmaTr * d) / d;
+    return std::max(0.0, std::exp(-sigmaTr * z) - far);  // >= 0; rounding near radius 0
+}
+
+// The dipole's sources for one channel (DESIGN.md section 2, with the corrected sigma_t'
+// and z_v): real source at depth z_r = 1/sigma_t', virtual one at z_v = z_r (1 + 4A/3).
+struct Poles {
+    double alphaPrime, sigmaTr, zr, zv;
+};
+
+Poles poles(const DipoleCoefficients& c) {
+    const double sigmaTPrime = c.sigmaSPrime + c.sigmaA;
+    const double zr = 1.0 / sigmaTPrime;
+    return {c.sigmaSPrime / sigmaTPrime, std::sqrt(3.0 * c.sigmaA * sigmaTPrime), zr,
+            zr * (1.0 + 4.0 * boundaryMismatch(c.eta) / 3.0)};
+}
+
 }  // namespace
 
 // DESIGN.md section 2: F_dr(eta), Egan and Hilgeman's polynomial fit.
@@ -34,13 +55,14 @@ double fresnelDiffuseReflectance(double eta) {
 // R_d(r) = alpha'/(4 pi) [z_r (sigma_tr + 1/d_r) e^{-sigma_tr d_r}/d_r^2
 //                       + z_v (sigma_tr + 1/d_v) e^{-sigma_tr d_v}/d_v^2].
 double dipoleProfile(double r, const DipoleCoefficients& c) {
-    const double sigmaTPrime = c.sigmaSPrime + c.sigmaA;
-    const double alphaPrime = c.sigmaSPrime / sigmaTPrime;
-    const double sigmaTr = std::sqrt(3.0 * c.sigmaA * sigmaTPrime);
-    const double zr = 1.0 / sigmaTPrime;
-    const double zv = zr * (1.0 + 4.0 * boundaryMismatch(c.eta) / 3.0);
-    return alphaPrime / (4.0 * std::numbers::pi) *
-           (poleTerm(r, zr, sigmaTr) + poleTerm(r, zv, sigmaTr));
+    const Poles p = poles(c);
+    return p.alphaPrime / (4.0 * std::numbers::pi) * (poleTerm(r, p.zr, p.sigmaTr) + poleTerm(r, p.zv, p.sigmaTr));
+}
+
+// integral_0^radius R_d(r) 2 pi r dr = (alpha'/(4 pi)) 2 pi (sum over both poles).
+double dipoleDiskReflectance(double radius, const DipoleCoefficients& c) {
+    const Poles p = poles(c);
+    return 0.5 * p.alphaPrime * (poleDiskIntegral(radius, p.zr, p.sigmaTr) + poleDiskIntegral(radius, p.zv, p.sigmaTr));
 }
 
 // DESIGN.md section 2 "Check": integral_0^inf R_d(r) 2 pi r dr

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <numeric>
 #include <sstream>
 #include <string>
@@ -171,6 +172,27 @@ double ProfileBasis::evaluate(int k, double r) const {
     const double t = std::clamp((r - radii_[hi - 1]) / (radii_[hi] - radii_[hi - 1]), 0.0, 1.0);
     const double* row = values_.data() + static_cast<std::size_t>(k) * L;
     return row[hi - 1] + t * (row[hi] - row[hi - 1]);
+}
+
+// integral_a^e 2 pi r (b_a + slope (r - a)) dr on each segment [r_{l-1}, r_l] up to radius.
+void ProfileBasis::diskIntegrals(double radius, std::span<double> out) const {
+    if (!(radius >= 0.0))
+        throw Error("ProfileBasis::diskIntegrals: radius = " + std::to_string(radius) + " mm must be >= 0");
+    if (out.size() != static_cast<std::size_t>(K()))
+        throw Error("ProfileBasis::diskIntegrals: " + std::to_string(out.size()) + " outputs for K = " +
+                    std::to_string(K()));
+    const std::size_t L = radii_.size();
+    std::fill(out.begin(), out.end(), 0.0);
+    for (std::size_t l = 1; l < L && radii_[l - 1] < radius; ++l) {
+        const double a = radii_[l - 1], c = radii_[l], e = std::min(radius, c);
+        const double square = (e * e - a * a) / 2.0, cube = (e * e * e - a * a * a) / 3.0;
+        for (int k = 0; k < K(); ++k) {
+            const double* row = values_.data() + static_cast<std::size_t>(k) * L;
+            const double slope = (row[l] - row[l - 1]) / (c - a);
+            out[static_cast<std::size_t>(k)] +=
+                2.0 * std::numbers::pi * (row[l - 1] * square + slope * (cube - a * square));
+        }
+    }
 }
 
 // DESIGN.md section 3: s_k(sigma) = sum_l w_l R_d(r_l, sigma) b_k(r_l).

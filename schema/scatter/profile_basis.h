@@ -48,6 +48,11 @@ public:
     // b_k(r), linearly interpolated between the stored samples; 0 beyond rMax. Throws for
     // k outside [0, K) or r negative or NaN.
     double evaluate(int k, double r) const;
+    // out[k] = integral_0^radius b_k(r) 2 pi r dr for every k (out: K values), exact for the
+    // piecewise-linear b_k of evaluate(); the disk is cut at rMax. The transfer's self term
+    // (DESIGN.md section 5): sum_k s_k out[k] ~= dipoleDiskReflectance(radius). Throws
+    // opal::Error for a negative or NaN radius.
+    void diskIntegrals(double radius, std::span<double> out) const;
     // s_k(sigma) = sum_l w_l R_d(r_l, sigma) b_k(r_l): K numbers per channel. Throws
     // opal::Error for non-positive or non-finite coefficients or eta < 1.
     std::vector<double> coefficients(const DipoleCoefficients& c) const;
@@ -74,13 +79,20 @@ public:
     // out[k] = b_k(r) for k < K; r in mm. Zero beyond rMax (and for r < 0 or NaN).
     // No allocation, one branch: the bake calls it for every pair of samples.
     void evaluate(float r, float* out) const;
+    // rows[k * stride + j] = b_k(r[j]) * weight[j] for k < K, j < r.size(): evaluate()
+    // followed by the product, bit for bit, with the table position found once per radius
+    // and four k interpolated at a time. Requires weight.size() >= r.size() and stride >=
+    // r.size() (unchecked: this is the bake's inner loop).
+    void evaluateWeighted(std::span<const float> r, std::span<const float> weight, float* rows,
+                          std::size_t stride) const;
 
 private:
     int K_ = 0;
+    int rowLength_ = 0;         // K rounded up to a multiple of 4 (zero padded)
     int resolution_ = 0;
     float rMax_ = 0.0f;
     float scale_ = 0.0f;        // resolution / sqrt(rMax): r -> table position
-    std::vector<float> table_;  // (resolution + 1) x K
+    std::vector<float> table_;  // (resolution + 1) x rowLength_
 };
 
 }  // namespace opal

@@ -20,6 +20,7 @@
 #include <bit>
 #include <cmath>
 #include <cstring>
+#include <numbers>
 #include <numeric>
 #include <random>
 #include <regex>
@@ -43,14 +44,19 @@ std::vector<std::vector<double>> exactGather(const TranslucentAsset& asset, cons
     const double toMm = 1.0 / asset.unitsPerMm;
     std::vector<std::vector<double>> y(std::size_t(K), std::vector<double>(n, 0.0));
     std::vector<float> b(static_cast<std::size_t>(K));
+    std::vector<double> self(static_cast<std::size_t>(K));
     for (std::size_t o = 0; o < n; ++o) {
         const Imath::V3d xo(asset.samples[o].position);
         for (std::size_t i = 0; i < n; ++i) {
+            if (i == o) continue;
             const double r = (Imath::V3d(asset.samples[i].position) - xo).length() * toMm;
             lookup.evaluate(float(r), b.data());
             const double weight = double(asset.samples[i].area) * toMm * toMm * irradiance[i];
             for (int k = 0; k < K; ++k) y[std::size_t(k)][o] += double(b[std::size_t(k)]) * weight;
         }
+        // The diagonal: b_k integrated over the sample's own disk (ProfileBasis, in double).
+        asset.basis.diskIntegrals(std::sqrt(double(asset.samples[o].area) / std::numbers::pi) * toMm, self);
+        for (int k = 0; k < K; ++k) y[std::size_t(k)][o] += self[std::size_t(k)] * irradiance[o];
     }
     return y;
 }

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <numbers>
 
@@ -27,8 +28,11 @@ TEST(ReferenceGather, SumsTheDipoleOverSamplesInMillimetres) {
     const std::vector<float> l = referenceGather(asset, m, e);
     for (int c = 0; c < 3; ++c) {
         const double a0 = 0.3 * 4.0, a1 = 0.2 * 4.0;  // mm^2
-        const double expected0 = (dipoleProfile(0.0, m.channel(c)) * a0 * e[c] + dipoleProfile(3.0, m.channel(c)) * a1 * e[3 + c]) / kPi;
-        const double expected1 = (dipoleProfile(3.0, m.channel(c)) * a0 * e[c] + dipoleProfile(0.0, m.channel(c)) * a1 * e[3 + c]) / kPi;
+        // Each sample's own light is gathered over its own disk (radius sqrt(A / pi)).
+        const double self0 = dipoleDiskReflectance(std::sqrt(a0 / kPi), m.channel(c));
+        const double self1 = dipoleDiskReflectance(std::sqrt(a1 / kPi), m.channel(c));
+        const double expected0 = (self0 * e[c] + dipoleProfile(3.0, m.channel(c)) * a1 * e[3 + c]) / kPi;
+        const double expected1 = (dipoleProfile(3.0, m.channel(c)) * a0 * e[c] + self1 * e[3 + c]) / kPi;
         EXPECT_NEAR(l[c], expected0, 1e-6 * expected0);
         EXPECT_NEAR(l[3 + c], expected1, 1e-6 * expected1);
     }

@@ -88,7 +88,8 @@ inline ProfileBasis fitBasis(const EditableRange& range, int K, double rMax) {
     return ProfileBasis::fit(settings);
 }
 
-// The dense T_k[o][i] = b_k(|x_o - x_i|) A_i (mm, mm^2) of DESIGN.md s.5, one k.
+// The dense T_k[o][i] = b_k(|x_o - x_i|) A_i (mm, mm^2) of DESIGN.md s.5, one k; the
+// diagonal integrates b_k over the sample's own disk of area A_o, as the bake does.
 inline std::vector<double> denseTransfer(const TranslucentAsset& asset, int k) {
     const std::size_t n = asset.samples.size();
     const double toMm = 1.0 / asset.unitsPerMm;
@@ -98,6 +99,9 @@ inline std::vector<double> denseTransfer(const TranslucentAsset& asset, int k) {
             const double r = (asset.samples[o].position - asset.samples[i].position).length() * toMm;
             t[o * n + i] = asset.basis.evaluate(k, r) * asset.samples[i].area * toMm * toMm;
         }
+        std::vector<double> self(std::size_t(asset.basis.K()));
+        asset.basis.diskIntegrals(std::sqrt(asset.samples[o].area / std::numbers::pi) * toMm, self);
+        t[o * n + o] = self[std::size_t(k)];
     });
     return t;
 }

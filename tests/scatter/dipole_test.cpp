@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace opal {
@@ -55,6 +56,34 @@ TEST(Dipole, TotalReflectanceMatchesIntegralForRandomMaterials) {
         EXPECT_NEAR(integrateProfileNumerically(c) / closedForm(c), 1.0, 1e-4)
             << "sigma_s' " << c.sigmaSPrime << " sigma_a " << c.sigmaA << " eta " << c.eta;
     }
+}
+
+// integral_0^radius R_d(r) 2 pi r dr by composite Simpson in r (smooth on [0, radius]).
+double integrateDiskNumerically(const DipoleCoefficients& c, double radius) {
+    const int intervals = 20000;
+    const double h = radius / intervals;
+    double sum = 0.0;
+    for (int i = 0; i <= intervals; ++i) {
+        const double r = i * h;
+        const double f = dipoleProfile(r, c) * 2.0 * kPi * r;
+        sum += f * ((i == 0 || i == intervals) ? 1.0 : (i % 2 == 1 ? 4.0 : 2.0));
+    }
+    return sum * h / 3.0;
+}
+
+TEST(Dipole, DiskReflectanceMatchesIntegralAndTendsToTheTotal) {
+    for (const NamedMaterial& preset : jensenPresets())
+        for (int ch = 0; ch < 3; ++ch) {
+            const DipoleCoefficients c = preset.material.channel(ch);
+            for (double radius : {0.01, 0.3, 2.0, 15.0}) {
+                const double numeric = integrateDiskNumerically(c, radius);
+                EXPECT_NEAR(dipoleDiskReflectance(radius, c), numeric, 1e-7 * closedForm(c) + 1e-9 * numeric)
+                    << preset.name << " channel " << ch << " radius " << radius;
+            }
+            EXPECT_NEAR(dipoleDiskReflectance(std::numeric_limits<double>::infinity(), c), closedForm(c),
+                        1e-12 * closedForm(c));
+            EXPECT_NEAR(dipoleDiskReflectance(0.0, c), 0.0, 1e-15);
+        }
 }
 
 TEST(Dipole, ProfileAtOriginMatchesHandExpansion) {

@@ -1,6 +1,7 @@
 // The PCA profile basis (DESIGN.md section 3): accuracy over held-out materials against
 // the exact dipole, the eigenproblem it solves, the stored form and the fast lookup.
 #include "schema/error.h"
+#include "schema/scatter/dipole.h"
 #include "schema/scatter/material_sampler.h"
 #include "schema/scatter/profile_basis.h"
 #include "schema/scatter/radial_grid.h"
@@ -87,6 +88,41 @@ TEST_F(DefaultBasis, ErrorFallsAsKGrows) {
 TEST_F(DefaultBasis, PresetsAreRepresented) {
     for (const NamedMaterial& preset : jensenPresets())
         for (int c = 0; c < 3; ++c) EXPECT_LT(defaultBasis().relativeError(preset.material.channel(c)), 5e-3) << preset.name;
+}
+
+TEST_F(DefaultBasis, DiskIntegralsIntegrateTheBasisAndReproduceTheDipole) {
+    const ProfileBasis& basis = defaultBasis();
+    const int K = basis.K();
+    std::vector<double> integral(std::size_t(K), 0.0);
+    for (double radius : {0.05, 0.7, 3.0, 40.0}) {
+        basis.diskIntegrals(radius, integral);
+        // Independent: the trapezoid rule over 2 pi r b_k(r) on a grid much finer than the stored radii.
+        const int steps = 50000;
+        for (int k = 0; k < K; ++k) {
+            double sum = 0.0, peak = 0.0;
+            for (int q = 0; q <= steps; ++q) {
+                const double r = radius * q / steps;
+                const double f = 2.0 * std::numbers::pi * r * basis.evaluate(k, r);
+                sum += (q == 0 || q == steps) ? 0.5 * f : f;
+                peak = std::max(peak, std::abs(basis.evaluate(k, r)));
+            }
+            sum *= radius / steps;
+            EXPECT_NEAR(integral[std::size_t(k)], sum, 1e-6 * peak * radius * radius + 1e-9 * std::abs(sum))
+                << "k " << k << " radius " << radius;
+        }
+        // sum_k s_k integral_k ~= the dipole's closed-form disk integral, within the PCA error.
+        for (const NamedMaterial& preset : jensenPresets())
+            for (int c = 0; c < 3; ++c) {
+                const std::vector<double> s = basis.coefficients(preset.material.channel(c));
+                double pca = 0.0;
+                for (int k = 0; k < K; ++k) pca += s[std::size_t(k)] * integral[std::size_t(k)];
+                const double exact = dipoleDiskReflectance(radius, preset.material.channel(c));
+                EXPECT_NEAR(pca, exact, 0.02 * exact) << preset.name << " channel " << c << " radius " << radius;
+            }
+    }
+    EXPECT_THROW(basis.diskIntegrals(-1.0, integral), Error);
+    std::vector<double> tooFew(2);
+    EXPECT_THROW(basis.diskIntegrals(1.0, tooFew), Error);
 }
 
 TEST_F(DefaultBasis, TruncatesTheLargerFitAndIsOrthonormal) {
