@@ -88,11 +88,13 @@ public:
 
 private:
     int K_ = 0;
-    int rowLength_ = 0;         // K rounded up to a multiple of 4 (zero padded)
+    int width_ = 0;             // K rounded up to a multiple of 4 (zero padded)
     int resolution_ = 0;
     float rMax_ = 0.0f;
     float scale_ = 0.0f;        // resolution / sqrt(rMax): r -> table position
-    std::vector<float> table_;  // (resolution + 1) x rowLength_
+    // (resolution + 1) rows of 2 x width_: interval i's start values b_k(u_i) and steps
+    // b_k(u_{i+1}) - b_k(u_i); the last row is zeros (where r is outside the table).
+    std::vector<float> table_;
 };
 
 }  // namespace opal
