@@ -1,5 +1,7 @@
 #include "bake/transfer_builder.h"
 
+#include "bake/transfer_row.h"
+
 #include "schema/wavelet/cdf97.h"
 #include "schema/wavelet/haar.h"
 
@@ -44,47 +46,23 @@ struct Step1Rows {
     std::vector<float> value;
 };
 
-// Sample positions in mm and areas in mm^2: the basis is tabulated in mm (DESIGN.md s.2).
-// selfTerm[o * K + k] = T_k[o][o], the profile integrated over the sample's own disk.
+// The samples in mm (transfer_row.h) and selfTerm[o * K + k] = T_k[o][o], the profile
+// integrated over the sample's own disk.
 struct SamplesMm {
-    std::vector<Imath::V3f> position;
-    std::vector<float> area;
+    TransferSamples samples;
     std::vector<float> selfTerm;
 };
 
 SamplesMm toMillimetres(std::span<const SurfaceSample> samples, double unitsPerMm, const ProfileBasis& basis) {
-    SamplesMm mm;
-    mm.position.reserve(samples.size());
-    mm.area.reserve(samples.size());
-    const float toMm = float(1.0 / unitsPerMm);
-    for (const SurfaceSample& s : samples) {
-        mm.position.push_back(s.position * toMm);
-        mm.area.push_back(s.area * toMm * toMm);
-    }
-    mm.selfTerm = transferSelfTerms(mm.area, basis);
+    SamplesMm mm{toTransferSamples(samples, unitsPerMm), {}};
+    mm.selfTerm = transferSelfTerms(mm.samples.area, basis);
     return mm;
-}
-
-// Row o of every T_k: T_k[o][i] = b_k(|x_o - x_i|) A_i (DESIGN.md s.5), written to
-// rows[k * N + i].
-void transferRow(std::size_t o, const SamplesMm& mm, const BasisLookup& lookup, float* rows) {
-    const std::size_t n = mm.position.size();
-    const int K = lookup.K();
-    const Imath::V3f xo = mm.position[o];
-    float b[64];
-    for (std::size_t i = 0; i < n; ++i) {
-        const float r = (mm.position[i] - xo).length();
-        lookup.evaluate(r, b);
-        const float a = mm.area[i];
-        for (int k = 0; k < K; ++k) rows[k * n + i] = b[k] * a;
-    }
-    for (int k = 0; k < K; ++k) rows[k * n + o] = mm.selfTerm[o * K + k];
 }
 
 std::vector<Step1Rows> compressLightDimension(const SamplesMm& mm, const ChartLayout& layout,
                                               const BasisLookup& lookup, std::uint32_t perRow,
                                               ProgressSink* progress, const CancelToken& cancel) {
-    const std::size_t n = mm.position.size();
+    const std::size_t n = mm.samples.size();
     const int K = lookup.K();
     std::vector<Step1Rows> rows(K);
     for (Step1Rows& r : rows) {
@@ -93,20 +71,24 @@ std::vector<Step1Rows> compressLightDimension(const SamplesMm& mm, const ChartLa
         r.value.resize(n * perRow);
     }
     StageScope stage(progress, "transfer step 1 (Haar)", n);
-    tbb::enumerable_thread_specific<std::vector<float>> scratch(
-        [&] { return std::vector<float>(std::size_t(K) * n + n); });
+    const std::size_t stride = transferRowStride(n);  // rows of K apart in cache sets
+    const std::size_t rowsSize = std::size_t(K - 1) * stride + n;
+    tbb::enumerable_thread_specific<std::vector<float>> scratch([&] { return std::vector<float>(rowsSize + n); });
     const std::size_t cellsPerChart = layout.cellsPerChart();
     const std::vector<float> importance = haarImportance(layout.size());
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 8), [&](const auto& range) {
         cancel.throwIfRequested();
         std::vector<float>& buf = scratch.local();
-        std::span<float> weighted(buf.data() + std::size_t(K) * n, n);
+        const std::span<float> all(buf.data(), rowsSize);
+        const std::span<float> weighted(buf.data() + rowsSize, n);
         for (std::size_t o = range.begin(); o != range.end(); ++o) {
-            transferRow(o, mm, lookup, buf.data());
+            transferRow(o, mm.samples, lookup, all, stride);
             for (int k = 0; k < K; ++k) {
-                std::span<float> row(buf.data() + k * n, n);
+                const std::span<float> row(buf.data() + std::size_t(k) * stride, n);
+                row[o] = mm.selfTerm[o * std::size_t(K) + std::size_t(k)];
                 haarForwardCharts(row, layout);
-                for (std::size_t i = 0; i < n; ++i) weighted[i] = row[i] * importance[i % cellsPerChart];
+                for (std::size_t c = 0; c < n; c += cellsPerChart)
+                    for (std::size_t q = 0; q < cellsPerChart; ++q) weighted[c + q] = row[c + q] * importance[q];
                 const SparseVector kept = keepLargest(weighted, perRow);
                 std::copy(kept.indices.begin(), kept.indices.end(), rows[k].column.begin() + o * perRow);
                 for (std::size_t e = 0; e < kept.size(); ++e)

@@ -1,0 +1,104 @@
+#include "bake/transfer_row.h"
+
+#include "schema/error.h"
+
+#include <Imath/ImathVec.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+namespace opal {
+
+namespace {
+
+// Columns are done in blocks small enough for the radii to stay in L1.
+constexpr std::size_t kBlock = 256;
+
+// r[j] = |x_i - x_o| for i = begin + j, as Imath's V3f::length computes it: sqrt of
+// (dx dx + dy dy) + dz dz, except below 2 FLT_MIN, where it rescales to avoid underflow
+// (V3f::lengthTiny). The common case vectorizes; the rare tiny ones (always the o == i
+// pair) are redone with Imath itself.
+void distances(const TransferSamples& s, std::size_t o, std::size_t begin, std::size_t count, float* r) {
+    const float xo = s.x[o], yo = s.y[o], zo = s.z[o];
+    const float* x = s.x.data() + begin;
+    const float* y = s.y.data() + begin;
+    const float* z = s.z.data() + begin;
+    constexpr float kTiny = 2.0f * std::numeric_limits<float>::min();
+    unsigned tiny = 0;  // a count, not a flag: sum reductions vectorize
+    for (std::size_t j = 0; j < count; ++j) {
+        const float dx = x[j] - xo, dy = y[j] - yo, dz = z[j] - zo;
+        r[j] = dx * dx + dy * dy + dz * dz;
+        tiny += r[j] < kTiny;
+    }
+    // std::sqrt may set errno, which keeps the compiler from vectorizing it; sqrtps rounds
+    // the same (IEEE square roots are correctly rounded) and the squares are never < 0.
+    std::size_t j = 0;
+#if defined(__SSE2__)
+    for (; j + 4 <= count; j += 4) _mm_storeu_ps(r + j, _mm_sqrt_ps(_mm_loadu_ps(r + j)));
+#endif
+    for (; j < count; ++j) r[j] = std::sqrt(r[j]);
+    if (tiny == 0) return;
+    for (j = 0; j < count; ++j) {
+        const Imath::V3f d(x[j] - xo, y[j] - yo, z[j] - zo);
+        if (d.length2() < kTiny) r[j] = d.length();
+    }
+}
+
+}  // namespace
+
+TransferSamples toTransferSamples(std::span<const SurfaceSample> samples, double unitsPerMm) {
+    if (!(unitsPerMm > 0.0 && std::isfinite(unitsPerMm)))
+        throw Error("transfer: units per mm must be positive and finite, got " + std::to_string(unitsPerMm));
+    const float toMm = float(1.0 / unitsPerMm);
+    TransferSamples mm;
+    const std::size_t n = samples.size();
+    mm.x.resize(n);
+    mm.y.resize(n);
+    mm.z.resize(n);
+    mm.area.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        mm.x[i] = samples[i].position.x * toMm;
+        mm.y[i] = samples[i].position.y * toMm;
+        mm.z[i] = samples[i].position.z * toMm;
+        mm.area[i] = samples[i].area * toMm * toMm;
+    }
+    return mm;
+}
+
+void transferRow(std::size_t o, const TransferSamples& samples, const BasisLookup& lookup,
+                 std::span<float> rows, std::size_t stride) {
+    const std::size_t n = samples.size(), K = std::size_t(lookup.K());
+    if (o >= n)
+        throw Error("transferRow: output sample " + std::to_string(o) + " is not below the " +
+                    std::to_string(n) + " samples");
+    if (stride < n || rows.size() != (K - 1) * stride + n)
+        throw Error("transferRow: buffer of " + std::to_string(rows.size()) + " floats with row stride " +
+                    std::to_string(stride) + ", expected (K - 1) x stride + N = " + std::to_string(K - 1) + " x " +
+                    std::to_string(stride) + " + " + std::to_string(n) + " (stride >= N)");
+    float r[kBlock];
+    for (std::size_t first = 0; first < n; first += kBlock) {
+        const std::size_t count = std::min(kBlock, n - first);
+        distances(samples, o, first, count, r);
+        lookup.evaluateWeighted(std::span<const float>(r, count),
+                                std::span<const float>(samples.area).subspan(first, count), rows.data() + first,
+                                stride);
+    }
+}
+
+void transferRow(std::size_t o, const TransferSamples& samples, const BasisLookup& lookup,
+                 std::span<float> rows) {
+    transferRow(o, samples, lookup, rows, samples.size());
+}
+
+std::size_t transferRowStride(std::size_t n) {
+    constexpr std::size_t kLine = 64 / sizeof(float);
+    return (n + kLine - 1) / kLine * kLine + kLine;
+}
+
+}  // namespace opal
