@@ -28,6 +28,37 @@ RTCRay toEmbree(const Ray& r) {
     return ray;
 }
 
+// Ray `slot` of an Embree packet (RTCRay8 or the ray of an RTCRayHit8).
+void setPacketRay(RTCRay8& packet, std::size_t slot, const Ray& r) {
+    packet.org_x[slot] = r.origin.x;
+    packet.org_y[slot] = r.origin.y;
+    packet.org_z[slot] = r.origin.z;
+    packet.dir_x[slot] = r.direction.x;
+    packet.dir_y[slot] = r.direction.y;
+    packet.dir_z[slot] = r.direction.z;
+    packet.tnear[slot] = r.tNear;
+    packet.tfar[slot] = r.tFar;
+    packet.time[slot] = 0.0f;
+    packet.mask[slot] = std::numeric_limits<unsigned>::max();
+    packet.id[slot] = 0;
+    packet.flags[slot] = 0;
+}
+
+// Embree's packet valid mask: -1 for the first `count` slots, 0 for the rest.
+struct alignas(32) PacketMask {
+    int valid[RayScene::kPacketSize];
+    explicit PacketMask(std::size_t count) {
+        for (std::size_t i = 0; i < RayScene::kPacketSize; ++i) valid[i] = i < count ? -1 : 0;
+    }
+};
+
+RTCIntersectContext coherentContext() {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    return context;
+}
+
 // Fans every polygon (c0, c(t+1), c(t+2)), checking indices against the point count.
 void fanTriangles(const RenderMesh& mesh, std::vector<std::uint32_t>& triangles,
                   std::vector<std::uint32_t>& faceOfTriangle) {
@@ -113,6 +144,13 @@ std::array<std::uint32_t, 3> RayScene::triangleVertices(std::uint32_t prim, std:
     return {t[3 * triangle], t[3 * triangle + 1], t[3 * triangle + 2]};
 }
 
+std::span<const std::uint32_t> RayScene::triangles(std::uint32_t prim) const {
+    if (prim >= meshes_.size())
+        throw Error("ray scene: mesh " + std::to_string(prim) + " out of range (" + std::to_string(meshes_.size()) +
+                    " meshes)");
+    return meshes_[prim].triangles;
+}
+
 std::uint32_t RayScene::triangleFace(std::uint32_t prim, std::uint32_t triangle) const {
     return meshes_.at(prim).faceOfTriangle.at(triangle);
 }
@@ -132,9 +170,7 @@ bool RayScene::occluded(const Ray& r) const {
 
 void RayScene::occluded(std::span<const Ray> rays, std::span<std::uint8_t> blocked) const {
     requireCommitted("occluded");
-    if (blocked.size() != rays.size())
-        throw Error("ray scene: " + std::to_string(blocked.size()) + " results for " + std::to_string(rays.size()) +
-                    " rays");
+    requireSizes(rays.size(), blocked.size());
     constexpr std::size_t kStream = 64;
     RTCRay stream[kStream];
     RTCIntersectContext context;
@@ -144,6 +180,54 @@ void RayScene::occluded(std::span<const Ray> rays, std::span<std::uint8_t> block
         for (std::size_t i = 0; i < n; ++i) stream[i] = toEmbree(rays[first + i]);
         rtcOccluded1M(scene_, &context, stream, unsigned(n), sizeof(RTCRay));
         for (std::size_t i = 0; i < n; ++i) blocked[first + i] = stream[i].tfar < 0.0f ? 1 : 0;
+    }
+}
+
+void RayScene::requireSizes(std::size_t rays, std::size_t results) const {
+    if (rays != results)
+        throw Error("ray scene: " + std::to_string(results) + " results for " + std::to_string(rays) + " rays");
+}
+
+void RayScene::occludedCoherent(std::span<const Ray> rays, std::span<std::uint8_t> blocked) const {
+    requireCommitted("occluded");
+    requireSizes(rays.size(), blocked.size());
+    RTCIntersectContext context = coherentContext();
+    RTCRay8 packet;
+    for (std::size_t first = 0; first < rays.size(); first += kPacketSize) {
+        const std::size_t n = std::min(kPacketSize, rays.size() - first);
+        for (std::size_t i = 0; i < n; ++i) setPacketRay(packet, i, rays[first + i]);
+        const PacketMask mask(n);
+        rtcOccluded8(mask.valid, scene_, &context, &packet);
+        for (std::size_t i = 0; i < n; ++i) blocked[first + i] = packet.tfar[i] < 0.0f ? 1 : 0;
+    }
+}
+
+void RayScene::intersectCoherent(std::span<const Ray> rays, std::span<std::optional<RayHit>> hits) const {
+    requireCommitted("intersect");
+    requireSizes(rays.size(), hits.size());
+    RTCIntersectContext context = coherentContext();
+    RTCRayHit8 packet;
+    for (std::size_t first = 0; first < rays.size(); first += kPacketSize) {
+        const std::size_t n = std::min(kPacketSize, rays.size() - first);
+        for (std::size_t i = 0; i < n; ++i) {
+            setPacketRay(packet.ray, i, rays[first + i]);
+            packet.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
+            packet.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
+        }
+        const PacketMask mask(n);
+        rtcIntersect8(mask.valid, scene_, &context, &packet);
+        for (std::size_t i = 0; i < n; ++i) {
+            std::optional<RayHit>& hit = hits[first + i];
+            hit.reset();
+            if (packet.hit.geomID[i] == RTC_INVALID_GEOMETRY_ID) continue;
+            hit.emplace();
+            hit->prim = packet.hit.geomID[i];
+            hit->triangle = packet.hit.primID[i];
+            hit->u = packet.hit.u[i];
+            hit->v = packet.hit.v[i];
+            hit->t = packet.ray.tfar[i];
+            hit->geometricNormal = {packet.hit.Ng_x[i], packet.hit.Ng_y[i], packet.hit.Ng_z[i]};
+        }
     }
 }
 

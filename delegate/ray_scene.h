@@ -1,7 +1,10 @@
 // An Embree 3 scene of the world-space triangle meshes of a render index (hdEmbree keeps
 // one Embree scene per index the same way). Two queries: occlusion along a segment (the
 // shadow rays of analytic lights, DESIGN.md s.6) and the closest hit (the render pass's
-// primary rays, s.7). Polygons are fanned into triangles: triangle t of a face with
+// primary rays, s.7), each one ray at a time, as a stream of unrelated rays, or as
+// coherent packets: Embree traverses 8 rays that start close together and point alike
+// (neighbouring pixels' primary rays, their shadow rays toward one light) about twice as
+// fast together as one by one. Polygons are fanned into triangles: triangle t of a face with
 // corners c0..c(n-1) is (c0, c(t+1), c(t+2)).
 //
 // Build: addMesh() for every mesh, then commit(). Queries are const and thread-safe on a
@@ -57,6 +60,9 @@ public:
     std::uint32_t meshCount() const { return std::uint32_t(meshes_.size()); }
     // The render-mesh vertices (p0, p1, p2) and the polygon of a hit triangle.
     std::array<std::uint32_t, 3> triangleVertices(std::uint32_t prim, std::uint32_t triangle) const;
+    // Every fanned triangle's vertices of one mesh (3 per triangle), unchecked per triangle:
+    // for the renderer's per-pixel loop. Throws opal::Error for a prim out of range.
+    std::span<const std::uint32_t> triangles(std::uint32_t prim) const;
     std::uint32_t triangleFace(std::uint32_t prim, std::uint32_t triangle) const;
     // The diagonal of the world bounding box of every mesh: the scale for ray offsets.
     float extent() const { return extent_; }
@@ -66,12 +72,20 @@ public:
     void occluded(std::span<const Ray> rays, std::span<std::uint8_t> blocked) const;
     std::optional<RayHit> intersect(const Ray& ray) const;
 
+    // Packets: the same answers as the one-ray queries, for rays traced kPacketSize at a time
+    // (rtcOccluded8 / rtcIntersect8 over consecutive rays; any count). Throws opal::Error
+    // when the spans differ in size.
+    static constexpr std::size_t kPacketSize = 8;
+    void occludedCoherent(std::span<const Ray> rays, std::span<std::uint8_t> blocked) const;
+    void intersectCoherent(std::span<const Ray> rays, std::span<std::optional<RayHit>> hits) const;
+
 private:
     struct Mesh {
         std::vector<std::uint32_t> triangles;  // 3 vertex indices each
         std::vector<std::uint32_t> faceOfTriangle;
     };
     void requireCommitted(const char* query) const;
+    void requireSizes(std::size_t rays, std::size_t results) const;
 
     RTCDevice device_ = nullptr;
     RTCScene scene_ = nullptr;

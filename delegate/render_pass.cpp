@@ -45,7 +45,11 @@ void OpalRenderPass::execute(const hd::RenderPassState& state, const std::vector
     std::vector<std::pair<hd::RenderBuffer*, hd::RenderBuffer*>> copies;  // (to, from)
     std::vector<std::pair<hd::Token, hd::RenderBuffer*>> first;
     for (const hd::AovBinding& binding : aovs) {
-        binding.buffer->allocate(state.width, state.height, aovChannelCount(binding.aov));
+        // A buffer of the right size is reused as it is: the renderer writes every pixel.
+        const int channels = aovChannelCount(binding.aov);
+        hd::RenderBuffer& buffer = *binding.buffer;
+        if (buffer.width() != state.width || buffer.height() != state.height || buffer.channels() != channels)
+            buffer.allocate(state.width, state.height, channels);
         float** target = targetOf(targets, binding.aov);
         if (!*target) {
             *target = binding.buffer->data().data();

@@ -1,6 +1,6 @@
 // Opal's render pass (hdEmbree's renderPass): renders the delegate's last committed frame
 // through a camera prim into the bound AOV buffers, allocating each to the pass's size with
-// the AOV's channels (delegate/DELEGATE.md).
+// the AOV's channels unless it has them already (delegate/DELEGATE.md).
 #pragma once
 
 #include "delegate/hd/render_index.h"

@@ -1,5 +1,6 @@
 #include "delegate/renderer.h"
 
+#include "delegate/lat_long_lookup.h"
 #include "delegate/specular.h"
 #include "schema/scatter/dipole.h"
 
@@ -19,6 +20,13 @@ namespace {
 // irradiance's shadow rays do (mesh_irradiance.cpp).
 constexpr double kShadowOffset = 1e-4;
 
+// Pixels are shaded in blocks of kBlockWidth x kBlockHeight neighbours: their primary rays
+// are one Embree packet, their shadow rays toward one light another (RayScene's coherent
+// queries, about twice as fast as one ray at a time).
+constexpr int kBlockWidth = 4, kBlockHeight = 2;
+constexpr int kBlockPixels = kBlockWidth * kBlockHeight;
+static_assert(kBlockPixels == int(RayScene::kPacketSize));
+
 const std::array<hd::Token, 8> Aovs = {hd::Aov::Color,  hd::Aov::Subsurface, hd::Aov::Specular, hd::Aov::Irradiance,
                                        hd::Aov::Normal, hd::Aov::Depth,      hd::Aov::PrimId,   hd::Aov::Alpha};
 
@@ -30,15 +38,56 @@ struct Pixel {
     bool hit = false;
 };
 
+// What shading reads of one mesh, looked up once per frame instead of once per pixel.
+struct MeshContext {
+    const MeshShading* shading = nullptr;
+    std::span<const std::uint32_t> triangles;  // 3 render-mesh vertices per ray-scene triangle
+    const Imath::V3f* normals = nullptr;       // per vertex, object space; null: geometric normals
+    double alpha = 0.0;                        // ggxAlpha(roughness)
+    double footprint = 0.0;                    // reflectionFootprint(alpha)
+    bool specular = false;                     // the GGX layer is on (render setting and material)
+};
+
+// The frame as the pixel loop reads it.
+struct FrameContext {
+    const Frame& frame;
+    const RenderOptions& options;
+    const CameraView& camera;
+    std::vector<MeshContext> meshes;  // by ray-scene prim number
+    double shadowOffset = 0.0;        // kShadowOffset * the scene's extent
+};
+
+FrameContext frameContext(const Frame& frame, const CameraView& camera, const RenderOptions& options) {
+    FrameContext context{frame, options, camera, {}, 0.0};
+    if (!frame.rays) return context;
+    context.shadowOffset = kShadowOffset * frame.rays->extent();
+    for (std::size_t prim = 0; prim < frame.meshes.size(); ++prim) {
+        const MeshShading& shading = *frame.meshes[prim];
+        MeshContext mesh;
+        mesh.shading = &shading;
+        mesh.triangles = frame.rays->triangles(std::uint32_t(prim));
+        const RenderMesh& renderMesh = shading.asset->mesh;
+        if (renderMesh.normals.size() == renderMesh.points.size()) mesh.normals = renderMesh.normals.data();
+        mesh.alpha = ggxAlpha(shading.roughness);
+        mesh.footprint = reflectionFootprint(mesh.alpha);
+        mesh.specular = options.specular && shading.specular;
+        context.meshes.push_back(mesh);
+    }
+    return context;
+}
+
+// v / |v| with one division.
+Imath::V3d unit(const Imath::V3d& v) { return v * (1.0 / v.length()); }
+
+// The dome's radiance toward a world direction (any length), averaged over the footprint.
 Imath::V3f domeRadiance(const DomeView& dome, const Imath::V3d& worldDirection, double footprint) {
-    const Imath::V2d uv = LatLongMap::coordinates(worldDirection * dome.worldToDome);
+    const Imath::V2d uv = latLongCoordinates(worldDirection * dome.worldToDome);
     const Imath::V3f l = dome.map->sample(uv.x, uv.y, footprint);
     return {l.x * float(dome.scale.x), l.y * float(dome.scale.y), l.z * float(dome.scale.z)};
 }
 
 // sum_j b_j value[v_j] over the hit triangle's vertices, RGB.
-Imath::V3f interpolate(const std::vector<float>& values, const std::array<std::uint32_t, 3>& v,
-                       const std::array<float, 3>& b) {
+Imath::V3f interpolate(const std::vector<float>& values, const std::uint32_t* v, const float* b) {
     Imath::V3f sum(0.0f);
     for (int j = 0; j < 3; ++j) {
         const float* p = values.data() + 3 * std::size_t(v[j]);
@@ -47,90 +96,157 @@ Imath::V3f interpolate(const std::vector<float>& values, const std::array<std::u
     return sum;
 }
 
-Imath::V3f specularLayer(const Frame& frame, const MeshShading& mesh, const Imath::V3d& p, const Imath::V3d& n,
-                         const Imath::V3d& ng, const Imath::V3d& wo) {
-    const double alpha = ggxAlpha(mesh.roughness);
-    const double offset = kShadowOffset * frame.rays->extent();
-    Imath::V3d sum(0.0);
-    for (const AnalyticLight& light : frame.lights) {
-        const std::optional<Incidence> in = light.incidence(p);
-        if (!in || ng.dot(in->toLight) <= 0.0) continue;  // no light, or below the surface
-        const double f = ggxReflectance(n, wo, in->toLight, alpha, mesh.eta);
-        if (f <= 0.0) continue;
-        Ray shadow;
-        shadow.origin = Imath::V3f(p + ng * offset);
-        shadow.direction = Imath::V3f(in->toLight);
-        shadow.tNear = 0.0f;
-        shadow.tFar = std::isinf(in->distance) ? std::numeric_limits<float>::infinity()
-                                               : float(in->distance * (1.0 - 1e-4));
-        if (frame.rays->occluded(shadow)) continue;
-        sum += Imath::V3d(in->normalIrradiance.x, in->normalIrradiance.y, in->normalIrradiance.z) * f;
+// Where a primary ray hit a mesh, as the specular layer needs it (world space, unit vectors).
+struct Surface {
+    const MeshContext* mesh = nullptr;  // null: no specular layer here (a miss, or switched off)
+    Imath::V3d p, n, ng, wo;            // point, shading normal, geometric normal toward wo, toward the viewer
+    double fresnelReflectance = 0.0;    // F_r(eta, n.wo) = 1 - F_t(eta, n.wo)
+};
+
+struct Block {
+    int count = 0;
+    std::array<int, kBlockPixels> x{}, y{};
+    std::array<Ray, kBlockPixels> rays;
+    std::array<std::optional<RayHit>, kBlockPixels> hits;
+    std::array<Surface, kBlockPixels> surfaces;
+    std::array<Pixel, kBlockPixels> pixels;
+};
+
+void background(const FrameContext& context, const Ray& ray, Pixel& pixel) {
+    if (context.options.transparentBackground) return;
+    const Imath::V3d direction(ray.direction);
+    for (const DomeView& dome : context.frame.domes) {
+        if (!dome.visibleToCamera) continue;
+        pixel.background += domeRadiance(dome, direction, context.camera.pixelAngle());
+        pixel.alpha = 1.0f;
     }
-    Imath::V3f result(sum);
-    if (!frame.domes.empty()) {
-        const double fr = fresnelReflectance(mesh.eta, n.dot(wo));
-        const Imath::V3d r = reflect(wo, n);
-        const double footprint = reflectionFootprint(alpha);
-        for (const DomeView& dome : frame.domes) result += domeRadiance(dome, r, footprint) * float(fr);
-    }
-    return result;
 }
 
-Pixel shade(const Frame& frame, const CameraView& camera, const RenderOptions& options, int x, int y) {
-    Pixel pixel;
-    const Ray ray = camera.ray(x + 0.5, y + 0.5);
-    const Imath::V3d direction = Imath::V3d(ray.direction).normalized();
-    const std::optional<RayHit> hit = frame.rays ? frame.rays->intersect(ray) : std::nullopt;
-    if (!hit) {
-        if (options.transparentBackground) return pixel;
-        for (const DomeView& dome : frame.domes) {
-            if (!dome.visibleToCamera) continue;
-            pixel.background += domeRadiance(dome, direction, camera.pixelAngle());
-            pixel.alpha = 1.0f;
-        }
-        return pixel;
+// Everything but the specular layer: subsurface = F_t(eta, n.w_o) sum_j b_j L(v_j), E, n, depth.
+Surface shadeSurface(const FrameContext& context, const Ray& ray, const RayHit& hit, Pixel& pixel) {
+    const MeshContext& mesh = context.meshes[hit.prim];
+    const MeshShading& shading = *mesh.shading;
+    const std::uint32_t* v = mesh.triangles.data() + 3 * std::size_t(hit.triangle);
+    const float b[3] = {1.0f - hit.u - hit.v, hit.u, hit.v};
+    Surface s;
+    s.p = Imath::V3d(ray.origin) + Imath::V3d(ray.direction) * double(hit.t);
+    s.wo = -unit(Imath::V3d(ray.direction));
+    s.ng = unit(Imath::V3d(hit.geometricNormal));
+    if (s.ng.dot(s.wo) < 0.0) s.ng = -s.ng;  // seen from behind: offsets go to the viewer's side
+    s.n = s.ng;
+    if (mesh.normals) {
+        const Imath::V3f object = mesh.normals[v[0]] * b[0] + mesh.normals[v[1]] * b[1] + mesh.normals[v[2]] * b[2];
+        const Imath::V3d world = Imath::V3d(object * shading.normalToWorld);
+        if (world.length() > 0.0) s.n = unit(world);
     }
-    const MeshShading& mesh = *frame.meshes[hit->prim];
-    const std::array<std::uint32_t, 3> v = frame.rays->triangleVertices(hit->prim, hit->triangle);
-    const std::array<float, 3> b = {1.0f - hit->u - hit->v, hit->u, hit->v};
-    const Imath::V3d p = Imath::V3d(ray.origin) + Imath::V3d(ray.direction) * double(hit->t);
-    const Imath::V3d wo = -direction;
-    Imath::V3d ng = Imath::V3d(hit->geometricNormal).normalized();
-    if (ng.dot(wo) < 0.0) ng = -ng;  // seen from behind: offsets go to the viewer's side
-    Imath::V3d n = ng;
-    const std::vector<Imath::V3f>& normals = mesh.asset->mesh.normals;
-    if (normals.size() == mesh.asset->mesh.points.size()) {
-        const Imath::V3f object = normals[v[0]] * b[0] + normals[v[1]] * b[1] + normals[v[2]] * b[2];
-        const Imath::V3d world = Imath::V3d(object * mesh.normalToWorld);
-        if (world.length() > 0.0) n = world.normalized();
-    }
-    const double muO = std::max(0.0, n.dot(wo));
-    pixel.subsurface = interpolate(mesh.vertexRadiance, v, b) * float(fresnelTransmittance(mesh.eta, muO));
-    pixel.irradiance = interpolate(mesh.vertexIrradiance, v, b);
-    if (options.specular && mesh.specular) pixel.specular = specularLayer(frame, mesh, p, n, ng, wo);
-    pixel.normal = Imath::V3f(n);
-    pixel.depth = hit->t;
-    pixel.primId = float(mesh.primId);
+    const double muO = std::max(0.0, s.n.dot(s.wo));
+    const double transmittance = fresnelTransmittance(shading.eta, muO);
+    s.fresnelReflectance = 1.0 - transmittance;  // fresnelReflectance(eta, n.wo): F_t clamps the same way
+    pixel.subsurface = interpolate(shading.vertexRadiance, v, b) * float(transmittance);
+    pixel.irradiance = interpolate(shading.vertexIrradiance, v, b);
+    pixel.normal = Imath::V3f(s.n);
+    pixel.depth = hit.t;
+    pixel.primId = float(shading.primId);
     pixel.alpha = 1.0f;
     pixel.hit = true;
-    return pixel;
+    if (mesh.specular) s.mesh = &mesh;
+    return s;
 }
 
-void store(float* target, int channels, std::size_t index, const float* values) {
-    if (target) std::copy_n(values, channels, target + index * std::size_t(channels));
+// sum over the analytic lights of f_s (n.l) E_perp V, V by one packet of shadow rays per light.
+void analyticSpecular(const FrameContext& context, const Block& block, std::array<Imath::V3d, kBlockPixels>& sums) {
+    std::array<Ray, kBlockPixels> shadows;
+    std::array<Imath::V3d, kBlockPixels> unshadowed;
+    std::array<int, kBlockPixels> pixelOf{};
+    std::array<std::uint8_t, kBlockPixels> blocked{};
+    for (const AnalyticLight& light : context.frame.lights) {
+        std::size_t count = 0;
+        for (int i = 0; i < block.count; ++i) {
+            const Surface& s = block.surfaces[i];
+            if (!s.mesh) continue;
+            const std::optional<Incidence> in = light.incidence(s.p);
+            if (!in || s.ng.dot(in->toLight) <= 0.0) continue;  // no light, or below the surface
+            const double f = ggxReflectance(s.n, s.wo, in->toLight, s.mesh->alpha, s.mesh->shading->eta);
+            if (f <= 0.0) continue;
+            Ray& shadow = shadows[count];
+            shadow.origin = Imath::V3f(s.p + s.ng * context.shadowOffset);
+            shadow.direction = Imath::V3f(in->toLight);
+            shadow.tNear = 0.0f;
+            shadow.tFar = std::isinf(in->distance) ? std::numeric_limits<float>::infinity()
+                                                   : float(in->distance * (1.0 - 1e-4));
+            unshadowed[count] = Imath::V3d(in->normalIrradiance.x, in->normalIrradiance.y, in->normalIrradiance.z) * f;
+            pixelOf[count++] = i;
+        }
+        if (count == 0) continue;
+        context.frame.rays->occludedCoherent(std::span(shadows).first(count), std::span(blocked).first(count));
+        for (std::size_t k = 0; k < count; ++k)
+            if (!blocked[k]) sums[pixelOf[k]] += unshadowed[k];
+    }
+}
+
+// The specular layer (specular.h): the analytic lights, then the domes' reflection
+// F_r(eta, n.v) L_dome(reflect(v, n), footprint).
+void shadeSpecular(const FrameContext& context, Block& block) {
+    std::array<Imath::V3d, kBlockPixels> sums;
+    sums.fill(Imath::V3d(0.0));
+    analyticSpecular(context, block, sums);
+    for (int i = 0; i < block.count; ++i) {
+        const Surface& s = block.surfaces[i];
+        if (!s.mesh) continue;
+        Imath::V3f result(sums[i]);
+        if (!context.frame.domes.empty()) {
+            const Imath::V3d r = reflect(s.wo, s.n);
+            for (const DomeView& dome : context.frame.domes)
+                result += domeRadiance(dome, r, s.mesh->footprint) * float(s.fresnelReflectance);
+        }
+        block.pixels[i].specular = result;
+    }
+}
+
+void shadeBlock(const FrameContext& context, Block& block) {
+    for (int i = 0; i < block.count; ++i) {
+        block.rays[i] = context.camera.ray(block.x[i] + 0.5, block.y[i] + 0.5);
+        block.pixels[i] = Pixel{};
+        block.surfaces[i] = Surface{};
+    }
+    const std::span<const Ray> rays = std::span(block.rays).first(std::size_t(block.count));
+    const std::span<std::optional<RayHit>> hits = std::span(block.hits).first(std::size_t(block.count));
+    if (context.frame.rays)
+        context.frame.rays->intersectCoherent(rays, hits);
+    else
+        std::fill(hits.begin(), hits.end(), std::nullopt);
+    bool specular = false;
+    for (int i = 0; i < block.count; ++i) {
+        if (hits[i]) {
+            block.surfaces[i] = shadeSurface(context, rays[i], *hits[i], block.pixels[i]);
+            specular = specular || block.surfaces[i].mesh;
+        } else {
+            background(context, rays[i], block.pixels[i]);
+        }
+    }
+    if (specular) shadeSpecular(context, block);
+}
+
+// A fixed channel count, assigned one by one: the compiler writes them in place (std::copy_n
+// of a few floats becomes a call to memmove).
+template <int Channels>
+void store(float* target, std::size_t index, const float* values) {
+    if (!target) return;
+    float* out = target + index * Channels;
+    for (int c = 0; c < Channels; ++c) out[c] = values[c];
 }
 
 void write(const AovTargets& t, std::size_t index, const Pixel& p) {
     const Imath::V3f color = p.hit ? p.subsurface + p.specular : p.background;
     const float rgba[4] = {color.x, color.y, color.z, p.alpha};
-    store(t.color, 4, index, rgba);
-    store(t.subsurface, 3, index, &p.subsurface.x);
-    store(t.specular, 3, index, &p.specular.x);
-    store(t.irradiance, 3, index, &p.irradiance.x);
-    store(t.normal, 3, index, &p.normal.x);
-    store(t.depth, 1, index, &p.depth);
-    store(t.primId, 1, index, &p.primId);
-    store(t.alpha, 1, index, &p.alpha);
+    store<4>(t.color, index, rgba);
+    store<3>(t.subsurface, index, &p.subsurface.x);
+    store<3>(t.specular, index, &p.specular.x);
+    store<3>(t.irradiance, index, &p.irradiance.x);
+    store<3>(t.normal, index, &p.normal.x);
+    store<1>(t.depth, index, &p.depth);
+    store<1>(t.primId, index, &p.primId);
+    store<1>(t.alpha, index, &p.alpha);
 }
 
 }  // namespace
@@ -146,15 +262,29 @@ int aovChannelCount(const hd::Token& aov) {
 }
 
 void renderFrame(const Frame& frame, const CameraView& camera, const RenderOptions& options, const AovTargets& targets) {
+    const FrameContext context = frameContext(frame, camera, options);
     const int width = camera.width(), height = camera.height();
-    const int tile = std::max(1, options.tileSize);
-    const int tilesX = (width + tile - 1) / tile, tilesY = (height + tile - 1) / tile;
+    // Tiles are whole blocks, so a block never straddles two tiles.
+    const int tileWidth = std::max(kBlockWidth, options.tileSize / kBlockWidth * kBlockWidth);
+    const int tileHeight = std::max(kBlockHeight, options.tileSize / kBlockHeight * kBlockHeight);
+    const int tilesX = (width + tileWidth - 1) / tileWidth, tilesY = (height + tileHeight - 1) / tileHeight;
     tbb::parallel_for(tbb::blocked_range<int>(0, tilesX * tilesY), [&](const tbb::blocked_range<int>& range) {
+        Block block;
         for (int t = range.begin(); t != range.end(); ++t) {
-            const int x0 = (t % tilesX) * tile, y0 = (t / tilesX) * tile;
-            for (int y = y0; y < std::min(y0 + tile, height); ++y)
-                for (int x = x0; x < std::min(x0 + tile, width); ++x)
-                    write(targets, std::size_t(y) * width + x, shade(frame, camera, options, x, y));
+            const int x0 = (t % tilesX) * tileWidth, y0 = (t / tilesX) * tileHeight;
+            const int x1 = std::min(x0 + tileWidth, width), y1 = std::min(y0 + tileHeight, height);
+            for (int by = y0; by < y1; by += kBlockHeight)
+                for (int bx = x0; bx < x1; bx += kBlockWidth) {
+                    block.count = 0;
+                    for (int y = by; y < std::min(by + kBlockHeight, y1); ++y)
+                        for (int x = bx; x < std::min(bx + kBlockWidth, x1); ++x) {
+                            block.x[block.count] = x;
+                            block.y[block.count++] = y;
+                        }
+                    shadeBlock(context, block);
+                    for (int i = 0; i < block.count; ++i)
+                        write(targets, std::size_t(block.y[i]) * width + block.x[i], block.pixels[i]);
+                }
         }
     });
 }
