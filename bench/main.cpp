@@ -18,7 +18,8 @@ void printUsage(std::FILE* out, std::span<const opal::bench::Subcommand> subcomm
 }  // namespace
 
 int main(int argc, char** argv) {
-    const std::array subcommands = {opal::bench::basisSubcommand(), opal::bench::bakeSubcommand()};
+    const std::array subcommands = {opal::bench::basisSubcommand(), opal::bench::bakeSubcommand(),
+                                    opal::bench::relightSubcommand(), opal::bench::transferRowSubcommand()};
     if (argc < 2) {
         printUsage(stderr, subcommands);
         return 2;

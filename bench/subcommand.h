@@ -17,5 +17,7 @@ struct Subcommand {
 
 Subcommand basisSubcommand();
 Subcommand bakeSubcommand();
+Subcommand relightSubcommand();
+Subcommand transferRowSubcommand();
 
 }  // namespace opal::bench

@@ -1,23 +1,13 @@
 #include "delegate/translucent_mesh.h"
 
 #include "delegate/reference_gather.h"
+#include "delegate/stopwatch.h"
 #include "schema/error.h"
 
-#include <chrono>
 
 namespace opal {
 
 namespace {
-
-class Stopwatch {
-public:
-    double ms() const {
-        return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start_).count();
-    }
-
-private:
-    std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
-};
 
 // What the renderer needs beyond what RelightEngine checks: per-vertex weights and normals
 // that match the render mesh.

@@ -1,0 +1,539 @@
+// `opal-bench relight`: what a look-development artist waits for (the render delegate
+// issue's benchmark). One baked asset, lit by a point light and the environment map, is
+// driven through the render delegate as a host drives it (hd::RenderIndex + OpalRenderDelegate,
+// bench/relight_scene.h); each case times, R times, exactly what the host waits for:
+//
+//   material     the material prim's values alternate between marble and skin1 (Jensen
+//                2001; both eta 1.3), lights fixed: RenderIndex::sync() = the prim's sync +
+//                commitResources, until the new per-sample and per-vertex radiance are in
+//                the committed frame (RelightEngine::setMaterial: DESIGN.md s.5, O(K N))
+//   light        the point light moves to a new position every repeat: sync(), i.e. its E
+//                with Embree shadow rays, the sparse products y_k, the material (s.5, s.6)
+//   environment  the dome turns about +Y by a new angle every repeat: sync(), i.e. the map
+//                re-projected to the cube map, dotted with the baked vectors, the products
+//   frame        one 1280 x 720 render pass with every AOV bound (opal-render's default),
+//                nothing changed: image formation only (s.7)
+//
+// and, in the same run, the exact reference for the same edit (bench/relight_reference.h),
+// once per case: the O(N^2) dipole gather with the same irradiance recompute, optionally
+// on a random subset of outputs scaled to all (--reference-outputs). One untimed warm-up
+// precedes each case's repeats. The delegate's own statistics (CommitStats) split each
+// commit into irradiance, products and material, which is where the time goes.
+#include "bench/cpu_time.h"
+#include "bench/relight_reference.h"
+#include "bench/relight_scene.h"
+#include "bench/subcommand.h"
+
+#include "delegate/color_config.h"
+#include "delegate/display_transform.h"
+#include "delegate/dome_texture.h"
+#include "delegate/hd/render_index.h"
+#include "delegate/image.h"
+#include "delegate/preview_writer.h"
+#include "delegate/render_delegate.h"
+#include "schema/asset/asset_layer.h"
+#include "schema/error.h"
+#include "schema/usd/atomic_file.h"
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace opal::bench {
+
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::ordered_json;
+
+// The targets on this 2-core machine.
+constexpr double kMaterialMs = 2.0;
+constexpr double kLightMs = 50.0;
+constexpr double kEnvironmentMs = 50.0;
+constexpr double kFrameMs = 50.0;
+constexpr double kLightSpeedup = 100.0;
+constexpr double kMaterialSpeedup = 10000.0;
+constexpr int kWidth = 1280, kHeight = 720;
+constexpr double kDomeStepDegrees = 23.0;
+
+struct Options {
+    fs::path asset;
+    fs::path env;
+    int repeats = 15;
+    std::size_t referenceOutputs = 0;  // 0: every sample
+    fs::path jsonFile;
+    fs::path preview;
+    std::vector<std::string> cases = {"material", "light", "environment", "frame"};
+
+    bool runs(std::string_view name) const { return std::find(cases.begin(), cases.end(), name) != cases.end(); }
+};
+
+// ../shared/assets beside the source tree, or $OPAL_SHARED_ASSETS (as opal-bench bake).
+fs::path sharedAssets() {
+    if (const char* env = std::getenv("OPAL_SHARED_ASSETS"); env && *env) return env;
+    return fs::path(__FILE__).parent_path().parent_path().parent_path() / "shared" / "assets";
+}
+
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+double loadAverage() {
+    double load = -1.0;
+    return getloadavg(&load, 1) == 1 ? load : -1.0;
+}
+
+// Milliseconds of the repeats of one quantity.
+struct Series {
+    std::vector<double> ms;
+
+    double median() const {
+        std::vector<double> v = ms;
+        std::sort(v.begin(), v.end());
+        const std::size_t n = v.size();
+        return n == 0 ? 0.0 : n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+    }
+    double min() const { return ms.empty() ? 0.0 : *std::min_element(ms.begin(), ms.end()); }
+    double max() const { return ms.empty() ? 0.0 : *std::max_element(ms.begin(), ms.end()); }
+};
+
+struct CaseResult {
+    std::string name;
+    std::string work;  // what was timed
+    Series times;
+    Series cpu;  // CPU milliseconds of the process over each repeat
+    std::vector<std::pair<std::string, Series>> breakdown;  // parts of each repeat
+    double targetMs = 0.0;
+    std::optional<double> speedupTarget;
+    std::optional<ReferenceTiming> reference;
+    std::string referenceNote;
+
+    std::optional<double> speedup() const {
+        if (!reference) return std::nullopt;
+        return reference->totalMs() / times.median();
+    }
+    bool targetMet() const { return times.median() <= targetMs; }
+    std::optional<bool> speedupMet() const {
+        if (!speedupTarget || !speedup()) return std::nullopt;
+        return *speedup() >= *speedupTarget;
+    }
+};
+
+CaseResult newCase(std::string name, std::string work, double targetMs,
+                   std::optional<double> speedupTarget = std::nullopt) {
+    CaseResult c;
+    c.name = std::move(name);
+    c.work = std::move(work);
+    c.targetMs = targetMs;
+    c.speedupTarget = speedupTarget;
+    return c;
+}
+
+// The delegate, its index and the scene, in the order they must be destroyed (index first).
+struct Session {
+    OpalRenderDelegate delegate;
+    RelightScene scene;
+    hd::RenderIndex index{delegate};
+
+    Session(std::shared_ptr<const TranslucentAsset> asset, const Material& material, const std::string& dome)
+        : scene(std::move(asset), material, dome, double(kWidth) / kHeight) {
+        scene.populate(index);
+    }
+};
+
+// One sync after an edit: its wall time and the commit's parts (CommitStats).
+void recordSync(Session& s, CaseResult& result) {
+    const double cpu = processCpuMilliseconds();
+    const auto start = std::chrono::steady_clock::now();
+    s.index.sync();
+    const double wall = millisecondsSince(start);
+    result.cpu.ms.push_back(processCpuMilliseconds() - cpu);
+    const CommitStats& c = s.delegate.lastCommit();
+    result.times.ms.push_back(wall);
+    const double parts[] = {c.irradianceMs, c.productsMs, c.materialMs,
+                            wall - c.irradianceMs - c.productsMs - c.materialMs};
+    if (result.breakdown.empty())
+        for (const char* name : {"irradiance", "products", "material", "other"})
+            result.breakdown.push_back({name, {}});
+    for (std::size_t i = 0; i < result.breakdown.size(); ++i) result.breakdown[i].second.ms.push_back(parts[i]);
+}
+
+// The work one edit must cause in a commit (delegate/translucent_mesh.h): checked, so
+// that each case times exactly its edit and nothing else.
+struct ExpectedWork {
+    std::uint64_t lightEvaluations = 0, irradianceProducts = 0, materialUpdates = 0;
+};
+
+void checkWork(const CaseResult& result, const CommitStats& before, const CommitStats& after, ExpectedWork expected) {
+    const ExpectedWork done{after.lightEvaluations - before.lightEvaluations,
+                            after.irradianceProducts - before.irradianceProducts,
+                            after.materialUpdates - before.materialUpdates};
+    if (done.lightEvaluations == expected.lightEvaluations && done.irradianceProducts == expected.irradianceProducts &&
+        done.materialUpdates == expected.materialUpdates && after.rayScenes == before.rayScenes &&
+        after.referenceGathers == before.referenceGathers)
+        return;
+    throw Error(result.name + " case: the commit did other work than the edit needs (" +
+                std::to_string(done.lightEvaluations) + " light evaluations, " +
+                std::to_string(done.irradianceProducts) + " product passes, " + std::to_string(done.materialUpdates) +
+                " material updates)");
+}
+
+// Runs edit(i) + sync for i = 0 (warm-up, untimed) .. repeats.
+void runEdits(Session& s, CaseResult& result, int repeats, const std::function<void(int)>& edit,
+              ExpectedWork expected) {
+    for (int i = 0; i <= repeats; ++i) {
+        const CommitStats before = s.delegate.totals();
+        edit(i);
+        if (i == 0)
+            s.index.sync();
+        else
+            recordSync(s, result);
+        checkWork(result, before, s.delegate.totals(), expected);
+    }
+}
+
+const Material& preset(const char* name) {
+    static const Material marble = *findPreset("marble");
+    static const Material skin1 = *findPreset("skin1");
+    return std::string_view(name) == "marble" ? marble : skin1;
+}
+
+// Edit i sets skin1 for even i, marble for odd i: every edit changes the material (the
+// scene starts with marble).
+const Material& materialOfEdit(int i) { return preset(i % 2 == 0 ? "skin1" : "marble"); }
+
+CaseResult materialCase(Session& s, int repeats) {
+    CaseResult r = newCase("material", "material prim edit (marble <-> skin1) -> RenderIndex::sync()", kMaterialMs,
+                           kMaterialSpeedup);
+    runEdits(s, r, repeats, [&](int i) { s.scene.setMaterial(s.index, materialOfEdit(i)); }, {0, 0, 1});
+    return r;
+}
+
+CaseResult lightCase(Session& s, int repeats) {
+    CaseResult r = newCase("light", "point light moved -> RenderIndex::sync()", kLightMs, kLightSpeedup);
+    runEdits(s, r, repeats, [&](int i) { s.scene.moveKeyLight(s.index, i + 1); }, {1, 1, 0});
+    return r;
+}
+
+CaseResult environmentCase(Session& s, int repeats) {
+    CaseResult r = newCase("environment", "dome rotated about +Y -> RenderIndex::sync()", kEnvironmentMs);
+    runEdits(s, r, repeats, [&](int i) { s.scene.rotateDome(s.index, kDomeStepDegrees * (i + 1)); }, {1, 1, 0});
+    return r;
+}
+
+// The share of pixels that hit the asset (the frame's cost grows with it).
+double coverage(const hd::RenderBuffer& primId) {
+    std::size_t hits = 0;
+    for (float id : primId.data()) hits += id >= 0.0f;
+    return primId.data().empty() ? 0.0 : double(hits) / double(primId.data().size());
+}
+
+// What the last frame left, to describe it.
+struct FrameOutput {
+    double coverage = 0.0;
+    std::optional<Image> color;  // RGBA, scene-linear
+};
+
+CaseResult frameCase(Session& s, int repeats, FrameOutput& output) {
+    CaseResult r = newCase("frame", "1280x720 render pass, every AOV bound, nothing changed", kFrameMs);
+    std::vector<std::unique_ptr<hd::RenderBuffer>> buffers;
+    std::vector<hd::AovBinding> bindings;
+    for (const hd::Token& aov : supportedAovs()) {
+        buffers.push_back(std::make_unique<hd::RenderBuffer>("/Buffers/" + aov));
+        bindings.push_back({aov, buffers.back().get()});
+    }
+    const std::unique_ptr<hd::RenderPass> pass = s.delegate.createRenderPass(s.index);
+    hd::RenderPassState state{RelightScene::CameraPath, kWidth, kHeight};
+    r.breakdown = {{"image_formation", {}}, {"buffers", {}}};
+    for (int i = 0; i <= repeats; ++i) {
+        const double cpu = processCpuMilliseconds();
+        const auto start = std::chrono::steady_clock::now();
+        pass->execute(state, bindings);
+        const double wall = millisecondsSince(start);
+        if (i == 0) continue;
+        r.cpu.ms.push_back(processCpuMilliseconds() - cpu);
+        r.times.ms.push_back(wall);
+        r.breakdown[0].second.ms.push_back(s.delegate.lastRenderMs());
+        r.breakdown[1].second.ms.push_back(wall - s.delegate.lastRenderMs());
+    }
+    for (std::size_t i = 0; i < bindings.size(); ++i) {
+        const hd::RenderBuffer& b = *buffers[i];
+        if (bindings[i].aov == hd::Aov::PrimId) output.coverage = coverage(b);
+        if (bindings[i].aov == hd::Aov::Color) output.color.emplace(b.width(), b.height(), b.channels(), b.data());
+    }
+    return r;
+}
+
+void announce(const char* what) {
+    std::printf("opal-bench relight: %s\n", what);
+    std::fflush(stdout);
+}
+
+// The exact reference for one more edit of each kind, after the timed cases.
+void runReference(Session& s, const std::shared_ptr<const TranslucentAsset>& asset,
+                  const std::shared_ptr<const LatLongMap>& domeMap, int repeats, std::size_t outputs,
+                  std::vector<CaseResult>& cases) {
+    const bool needed = std::any_of(cases.begin(), cases.end(), [](const CaseResult& c) { return c.name != "frame"; });
+    std::optional<RelightReference> reference;
+    if (needed) {
+        reference.emplace(s.scene, asset, domeMap, s.scene.material(RelightScene::MaterialPath).subsurface, outputs);
+        char line[200];
+        std::snprintf(line, sizeof line, "exact reference: gathering %zu of %zu outputs x %zu samples per case%s",
+                      reference->outputs(), asset->samples.size(), asset->samples.size(),
+                      reference->extrapolated() ? " (extrapolated to every output)" : "");
+        announce(line);
+    }
+    for (CaseResult& c : cases) {
+        if (c.name == "frame") {
+            c.referenceNote = "n/a: opal:reference forms the image with the same renderer; only the per-vertex "
+                              "radiance differs, which the edit cases time";
+            continue;
+        }
+        if (c.name == "material") c.reference = reference->materialEdit(materialOfEdit(repeats + 1));
+        if (c.name == "light") c.reference = reference->keyLightMove(s.scene.keyLightAt(repeats + 2));
+        if (c.name == "environment")
+            c.reference = reference->domeRotation(s.scene.domeAt(kDomeStepDegrees * (repeats + 2)));
+        if (reference->extrapolated())
+            c.referenceNote = "gather extrapolated from " + std::to_string(reference->outputs()) + " outputs";
+        std::printf("opal-bench relight:   %s: %.0f ms\n", c.name.c_str(), c.reference->totalMs());
+        std::fflush(stdout);
+    }
+}
+
+std::string msText(double ms) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, ms < 10.0 ? "%.3f" : ms < 1000.0 ? "%.1f" : "%.0f", ms);
+    return buf;
+}
+
+std::string speedupText(std::optional<double> s) {
+    if (!s) return "-";
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.0fx", *s);
+    return buf;
+}
+
+const char* verdict(std::optional<bool> met) { return !met ? "-" : *met ? "ok" : "MISSED"; }
+
+void printTable(const std::vector<CaseResult>& cases) {
+    std::printf("\n%-12s %10s %9s %9s %8s %6s %14s %10s %9s %6s\n", "case", "median ms", "min", "max", "target",
+                "met", "reference ms", "speed-up", "target", "met");
+    for (const CaseResult& c : cases) {
+        const std::string target = "<= " + msText(c.targetMs);
+        const std::string speedupTarget = c.speedupTarget ? ">= " + speedupText(c.speedupTarget) : "-";
+        std::printf("%-12s %10s %9s %9s %8s %6s %14s %10s %9s %6s\n", c.name.c_str(), msText(c.times.median()).c_str(),
+                    msText(c.times.min()).c_str(), msText(c.times.max()).c_str(), target.c_str(),
+                    verdict(c.targetMet()), c.reference ? msText(c.reference->totalMs()).c_str() : "-",
+                    speedupText(c.speedup()).c_str(), speedupTarget.c_str(), verdict(c.speedupMet()));
+    }
+}
+
+void printBreakdown(const std::vector<CaseResult>& cases) {
+    std::printf("\nwhere the time goes (medians of each part over the repeats, ms; the delegate's CommitStats: "
+                "irradiance = E_m of the changed light, products = y_k, material = s_k + inverse 9/7 + vertices, "
+                "other = prim sync + commit bookkeeping; frame: image_formation = renderFrame, buffers = allocation + "
+                "AOV checks):\n");
+    for (const CaseResult& c : cases) {
+        std::printf("  %-12s %s:", c.name.c_str(), c.work.c_str());
+        for (const auto& [part, series] : c.breakdown) std::printf(" %s %s;", part.c_str(), msText(series.median()).c_str());
+        std::printf(" CPU (all threads) %s;", msText(c.cpu.median()).c_str());
+        std::printf("%s\n", c.targetMet() ? "" : "  <- target missed");
+    }
+    std::printf("\nexact reference, one edit per case (ms):\n");
+    for (const CaseResult& c : cases) {
+        if (!c.reference) {
+            std::printf("  %-12s %s\n", c.name.c_str(), c.referenceNote.c_str());
+            continue;
+        }
+        const ReferenceTiming& t = *c.reference;
+        std::printf("  %-12s irradiance %s; exact E %s; gather %s", c.name.c_str(), msText(t.irradianceMs).c_str(),
+                    msText(t.exactMs).c_str(), msText(t.gatherMs).c_str());
+        if (t.gatherMs != t.measuredGatherMs) std::printf(" (measured %s)", msText(t.measuredGatherMs).c_str());
+        std::printf(", CPU %s", msText(t.gatherCpuMs).c_str());
+        std::printf("; vertices %s%s%s\n", msText(t.verticesMs).c_str(), c.referenceNote.empty() ? "" : "; ",
+                    c.referenceNote.c_str());
+    }
+}
+
+Json optionalJson(std::optional<double> v) { return v ? Json(*v) : Json(nullptr); }
+
+Json caseJson(const CaseResult& c) {
+    Json breakdown = Json::object();
+    for (const auto& [part, series] : c.breakdown) breakdown[part] = series.median();
+    Json j = {{"work", c.work},
+              {"median_ms", c.times.median()},
+              {"min_ms", c.times.min()},
+              {"max_ms", c.times.max()},
+              {"repeats", c.times.ms.size()},
+              {"times_ms", c.times.ms},
+              {"cpu_median_ms", c.cpu.median()},
+              {"target_ms", c.targetMs},
+              {"target_met", c.targetMet()},
+              {"reference_ms", c.reference ? Json(c.reference->totalMs()) : Json(nullptr)},
+              {"speedup", optionalJson(c.speedup())},
+              {"speedup_target", optionalJson(c.speedupTarget)},
+              {"speedup_met", c.speedupMet() ? Json(*c.speedupMet()) : Json(nullptr)},
+              {"breakdown_ms", breakdown}};
+    if (c.reference)
+        j["reference_breakdown_ms"] = {{"irradiance", c.reference->irradianceMs},
+                                       {"exact_irradiance", c.reference->exactMs},
+                                       {"gather", c.reference->gatherMs},
+                                       {"gather_measured", c.reference->measuredGatherMs},
+                                       {"gather_cpu", c.reference->gatherCpuMs},
+                                       {"vertices", c.reference->verticesMs}};
+    if (!c.referenceNote.empty()) j["reference_note"] = c.referenceNote;
+    return j;
+}
+
+struct RunInfo {
+    fs::path asset, env;
+    std::size_t samples = 0, vertices = 0, referenceOutputs = 0;
+    bool extrapolated = false;
+    double coverage = 0.0, firstCommitMs = 0.0, loadBefore = -1.0, loadAfter = -1.0;
+};
+
+Json resultsJson(const RunInfo& info, const std::vector<CaseResult>& cases) {
+    Json byCase = Json::object(), speedups = Json::object();
+    for (const CaseResult& c : cases) {
+        byCase[c.name] = caseJson(c);
+        if (c.reference) speedups[c.name] = *c.speedup();
+    }
+    return {{"asset", fs::absolute(info.asset).lexically_normal().string()},
+            {"samples", info.samples},
+            {"render_vertices", info.vertices},
+            {"env_map", info.env.empty() ? Json(nullptr) : Json(fs::absolute(info.env).lexically_normal().string())},
+            {"resolution", {kWidth, kHeight}},
+            {"frame_coverage", info.coverage},
+            {"first_commit_ms", info.firstCommitMs},
+            {"reference_outputs", info.referenceOutputs},
+            {"reference_extrapolated", info.extrapolated},
+            {"cases", byCase},
+            {"speedups", speedups},
+            {"machine",
+             {{"hardware_concurrency", std::thread::hardware_concurrency()},
+              {"load_average_before", info.loadBefore},
+              {"load_average_after", info.loadAfter}}}};
+}
+
+// The environment map, read as the delegate reads it (OpenImageIO, OCIO to the working
+// space); null when the asset has no environment transfer.
+std::shared_ptr<const LatLongMap> loadDome(const fs::path& env, const TranslucentAsset& asset) {
+    if (asset.environment.offsets.empty()) {
+        announce("the asset has no environment transfer: no dome, no environment case");
+        return nullptr;
+    }
+    if (std::error_code ec; !fs::is_regular_file(env, ec))
+        throw Error("environment map '" + env.string() + "' not found (pass --env, or set OPAL_SHARED_ASSETS)");
+    DomeTextureCache textures;
+    const hd::LightDesc defaults;
+    return textures.get(env.string(), defaults.textureColorSpace);
+}
+
+// The default display and view of the delegate's OCIO config ($OCIO or Opal's own).
+void writeFramePreview(const fs::path& file, const Image& color) {
+    const ColorConfig config = ColorConfig::fromEnvironment();
+    writePreview(file, DisplayTransform(config).apply(color));
+    std::printf("opal-bench relight: wrote the timed frame to %s\n", file.c_str());
+}
+
+int run(const Options& options) {
+    RunInfo info;
+    info.asset = options.asset;
+    info.loadBefore = loadAverage();
+    auto asset = std::make_shared<const TranslucentAsset>(readAsset(options.asset));
+    const std::shared_ptr<const LatLongMap> domeMap = loadDome(options.env, *asset);
+    if (domeMap) info.env = options.env;
+    info.samples = asset->samples.size();
+    info.vertices = asset->mesh.points.size();
+
+    Session session(asset, preset("marble"), info.env.string());
+    const auto start = std::chrono::steady_clock::now();
+    session.index.sync();
+    info.firstCommitMs = millisecondsSince(start);
+    std::printf("opal-bench relight: %s: %zu samples, %zu render-mesh vertices (%.1f sample weights each); first "
+                "commit %.0f ms; %d repeats per case\n", options.asset.c_str(), info.samples, info.vertices,
+                double(asset->vertexWeights.samples.size()) / double(std::max<std::size_t>(info.vertices, 1)),
+                info.firstCommitMs, options.repeats);
+    std::fflush(stdout);
+
+    std::vector<CaseResult> cases;
+    if (options.runs("material")) cases.push_back(materialCase(session, options.repeats));
+    if (options.runs("light")) cases.push_back(lightCase(session, options.repeats));
+    if (options.runs("environment") && domeMap) cases.push_back(environmentCase(session, options.repeats));
+    if (options.runs("frame")) {
+        FrameOutput frame;
+        cases.push_back(frameCase(session, options.repeats, frame));
+        info.coverage = frame.coverage;
+        if (!options.preview.empty()) writeFramePreview(options.preview, *frame.color);
+    }
+    for (const std::string& warning : session.delegate.takeWarnings()) std::printf("  warning: %s\n", warning.c_str());
+
+    runReference(session, asset, domeMap, options.repeats, options.referenceOutputs, cases);
+    info.referenceOutputs = std::min(options.referenceOutputs ? options.referenceOutputs : info.samples, info.samples);
+    info.extrapolated = info.referenceOutputs < info.samples;
+    info.loadAfter = loadAverage();
+
+    printTable(cases);
+    printBreakdown(cases);
+    std::printf("\nframe: %.1f%% of the pixels hit the asset; %u hardware threads; load average %.1f before, %.1f after\n",
+                100.0 * info.coverage, std::thread::hardware_concurrency(), info.loadBefore, info.loadAfter);
+    if (info.extrapolated)
+        std::printf("reference: gather extrapolated from %zu of %zu outputs (exactly linear in outputs)\n",
+                    info.referenceOutputs, info.samples);
+    if (!options.jsonFile.empty()) {
+        writeFileAtomically(options.jsonFile, resultsJson(info, cases).dump(2) + "\n");
+        std::printf("wrote %s\n", options.jsonFile.c_str());
+    }
+    return 0;
+}
+
+int runRelightBench(int argc, char** argv) {
+    CLI::App app{"Relighting latency (material edit, light move, dome rotation, one frame) against the exact "
+                 "reference",
+                 "opal-bench relight"};
+    Options options;
+    options.env = sharedAssets() / "envmaps" / "studio_small_05_1k.hdr";
+    app.add_option("--asset", options.asset, "the baked asset (ASSET.usda)")->required();
+    app.add_option("--env", options.env, "the dome's lat-long map (default: studio_small_05_1k.hdr in "
+                                         "$OPAL_SHARED_ASSETS/envmaps, else ../shared/assets beside the source tree)");
+    app.add_option("--repeats", options.repeats, "timed repeats per case (after one warm-up)")
+        ->check(CLI::Range(1, 100000))
+        ->capture_default_str();
+    app.add_option("--reference-outputs", options.referenceOutputs,
+                   "gather the exact reference at this many random outputs and scale to all (default: every "
+                   "sample; the gather is O(N) per output)");
+    app.add_option("--json", options.jsonFile, "also write the results as JSON to this file");
+    app.add_option("--case", options.cases, "run only these cases (repeatable; default: all)")
+        ->check(CLI::IsMember({"material", "light", "environment", "frame"}))
+        ->capture_default_str();
+    app.add_option("--preview", options.preview, "also write the timed frame's color (OCIO default view) to this "
+                                                 ".png or .jpg");
+    CLI11_PARSE(app, argc, argv);
+    try {
+        return run(options);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "opal-bench relight: %s\n", e.what());
+        return 1;
+    }
+}
+
+}  // namespace
+
+Subcommand relightSubcommand() {
+    return {"relight", "material edit, light move, dome rotation and frame times against the exact reference",
+            runRelightBench};
+}
+
+}  // namespace opal::bench

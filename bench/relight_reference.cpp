@@ -1,0 +1,106 @@
+#include "bench/relight_reference.h"
+
+#include "bench/cpu_time.h"
+#include "bench/relight_scene.h"
+#include "delegate/reference_gather.h"
+#include "delegate/stopwatch.h"
+#include "delegate/relight_engine.h"
+
+#include <algorithm>
+#include <numeric>
+#include <random>
+
+namespace opal::bench {
+
+namespace {
+
+constexpr std::uint32_t kOutputSeed = 1;
+
+// `count` distinct samples drawn uniformly (fixed seed), ascending; empty for all of them.
+std::vector<std::uint32_t> randomOutputs(std::size_t samples, std::size_t count) {
+    if (count == 0 || count >= samples) return {};
+    std::vector<std::uint32_t> all(samples);
+    std::iota(all.begin(), all.end(), 0u);
+    std::mt19937 random(kOutputSeed);
+    std::shuffle(all.begin(), all.end(), random);
+    all.resize(count);
+    std::sort(all.begin(), all.end());
+    return all;
+}
+
+}  // namespace
+
+RelightReference::RelightReference(const RelightScene& scene, std::shared_ptr<const TranslucentAsset> asset,
+                                   std::shared_ptr<const LatLongMap> domeMap, const Material& material,
+                                   std::size_t outputs)
+    : asset_(asset),
+      domeMap_(std::move(domeMap)),
+      irradiance_(asset, Imath::M44d()),
+      material_(material),
+      outputs_(randomOutputs(asset->samples.size(), outputs)) {
+    rays_.addMesh(asset_->mesh, Imath::M44d());
+    rays_.commit();
+    irradiance_.setLight(RelightScene::KeyLightPath, AnalyticLight::fromDesc(scene.keyLight()), rays_);
+    if (scene.hasDome())
+        irradiance_.setLight(RelightScene::DomePath,
+                             std::make_shared<const EnvironmentLight>(EnvironmentLight::fromDesc(domeMap_, scene.dome())));
+}
+
+ReferenceTiming RelightReference::materialEdit(const Material& material) {
+    material_ = material;
+    ReferenceTiming timing;
+    radiance(timing);
+    return timing;
+}
+
+ReferenceTiming RelightReference::keyLightMove(const hd::LightDesc& key) {
+    ReferenceTiming timing;
+    const Stopwatch clock;
+    irradiance_.setLight(RelightScene::KeyLightPath, AnalyticLight::fromDesc(key), rays_);
+    timing.irradianceMs = clock.ms();
+    radiance(timing);
+    return timing;
+}
+
+ReferenceTiming RelightReference::domeRotation(const hd::LightDesc& dome) {
+    ReferenceTiming timing;
+    const Stopwatch clock;
+    irradiance_.setLight(RelightScene::DomePath,
+                         std::make_shared<const EnvironmentLight>(EnvironmentLight::fromDesc(domeMap_, dome)));
+    timing.irradianceMs = clock.ms();
+    radiance(timing);
+    return timing;
+}
+
+void RelightReference::radiance(ReferenceTiming& timing) {
+    const std::size_t samples = asset_->samples.size();
+    const Stopwatch exactClock;
+    const std::vector<float> exact = irradiance_.exactIrradiance(material_.eta);
+    timing.exactMs = exactClock.ms();
+
+    const double cpu = processCpuMilliseconds();
+    const Stopwatch gatherClock;
+    const std::vector<float> gathered = referenceGather(*asset_, material_, exact, outputs_);
+    timing.measuredGatherMs = gatherClock.ms();
+    // Exactly linear in the outputs: every output is the same loop over all N samples.
+    const double scale = double(samples) / double(outputs());
+    timing.gatherMs = timing.measuredGatherMs * scale;
+    timing.gatherCpuMs = (processCpuMilliseconds() - cpu) * scale;
+
+    // The vertices in full (a partial gather leaves the other samples at zero: the cost
+    // does not depend on the values).
+    std::vector<float> perSample;
+    if (extrapolated()) {
+        perSample.assign(3 * samples, 0.0f);
+        for (std::size_t j = 0; j < outputs_.size(); ++j)
+            std::copy_n(gathered.begin() + 3 * j, 3, perSample.begin() + 3 * std::size_t(outputs_[j]));
+    }
+    const std::size_t vertices = asset_->vertexWeights.offsets.size() - 1;
+    std::vector<float> vertexRadiance(3 * vertices), vertexIrradiance(3 * vertices);
+    const Stopwatch verticesClock;
+    interpolateToVertices(asset_->vertexWeights, extrapolated() ? perSample : gathered, vertexRadiance);
+    interpolateToVertices(asset_->vertexWeights, exact, vertexIrradiance);
+    timing.verticesMs = verticesClock.ms();
+}
+
+}  // namespace opal::bench
