@@ -107,19 +107,6 @@ double enclosedVolume(const RenderMesh& mesh) {
     return volume;
 }
 
-std::string objText(const ControlMesh& mesh) {
-    std::ostringstream obj;
-    obj.precision(9);
-    for (const Imath::V3f& p : mesh.positions) obj << "v " << p.x << ' ' << p.y << ' ' << p.z << '\n';
-    std::size_t at = 0;
-    for (std::int32_t n : mesh.faceVertexCounts) {
-        obj << 'f';
-        for (std::int32_t c = 0; c < n; ++c) obj << ' ' << mesh.faceVertexIndices[at++] + 1;
-        obj << '\n';
-    }
-    return obj.str();
-}
-
 // The limit surface refined `extra` levels beyond the render mesh: its polygon area is
 // within float noise of the true limit-surface area.
 RenderMesh refinedFurther(ControlMesh control, SubdivisionScheme scheme, int level) {
@@ -370,7 +357,7 @@ TEST(BakePipeline, SphereSamplesAreaNormalsAndChartsAgainstClosedForms) {
     // An icosphere of radius 25 mm read from an OBJ (Loop subdivision, the importer path).
     const test::ScratchDir dir;
     const ControlMesh control = test::icosphere(2, 25.0f);
-    test::writeText(dir / "sphere.obj", objText(control));
+    test::writeText(dir / "sphere.obj", test::objText(control));
     BakeOptions options;
     options.input = (dir / "sphere.obj").string();
     options.level = 1;

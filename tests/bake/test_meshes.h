@@ -12,10 +12,26 @@
 #include <cstdint>
 #include <map>
 #include <numbers>
+#include <sstream>
+#include <string>
 #include <utility>
 #include <vector>
 
 namespace opal::test {
+
+// The mesh as Wavefront OBJ text (positions and faces only), for bakes through a file.
+inline std::string objText(const ControlMesh& mesh) {
+    std::ostringstream obj;
+    obj.precision(9);
+    for (const Imath::V3f& p : mesh.positions) obj << "v " << p.x << ' ' << p.y << ' ' << p.z << '\n';
+    std::size_t at = 0;
+    for (std::int32_t n : mesh.faceVertexCounts) {
+        obj << 'f';
+        for (std::int32_t c = 0; c < n; ++c) obj << ' ' << mesh.faceVertexIndices[at++] + 1;
+        obj << '\n';
+    }
+    return obj.str();
+}
 
 inline void addFace(ControlMesh& mesh, std::initializer_list<std::int32_t> corners) {
     mesh.faceVertexCounts.push_back(std::int32_t(corners.size()));

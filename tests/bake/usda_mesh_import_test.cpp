@@ -59,19 +59,6 @@ std::string layer(const std::string& prims, const std::string& metadata = "") {
     return "#usda 1.0\n" + (metadata.empty() ? std::string() : "(\n    " + metadata + "\n)\n") + "\n" + prims;
 }
 
-std::string objText(const ControlMesh& mesh) {
-    std::ostringstream obj;
-    obj.precision(9);
-    for (const Imath::V3f& p : mesh.positions) obj << "v " << p.x << ' ' << p.y << ' ' << p.z << '\n';
-    std::size_t at = 0;
-    for (std::int32_t n : mesh.faceVertexCounts) {
-        obj << 'f';
-        for (std::int32_t c = 0; c < n; ++c) obj << ' ' << mesh.faceVertexIndices[at++] + 1;
-        obj << '\n';
-    }
-    return obj.str();
-}
-
 // Each face as its corner positions, to compare meshes whose vertex numbering differs.
 std::vector<std::vector<Imath::V3f>> facePositions(const ControlMesh& m) {
     std::vector<std::vector<Imath::V3f>> faces;
@@ -122,7 +109,7 @@ TEST(UsdaMeshImport, QuadCubeMatchesTheSameCubeThroughTheObjReader) {
     const ScratchDir dir;
     const ControlMesh cube = test::cube();
     test::writeText(dir / "cube.usda", layer(meshPrim("Cube", cube)));
-    test::writeText(dir / "cube.obj", objText(cube));
+    test::writeText(dir / "cube.obj", test::objText(cube));
     ImportedMesh usda = importMesh(dir / "cube.usda");
     ImportedMesh obj = importMesh(dir / "cube.obj");
     // As authored: the same points, counts and indices, quads kept.
