@@ -4,6 +4,7 @@
 #include "schema/wavelet/scratch.h"
 
 #include <algorithm>
+#include <bit>
 #include <numbers>
 #include <utility>
 
@@ -176,6 +177,18 @@ void haarInverseCharts(std::span<T> data, const ChartLayout& layout, std::uint32
     wavelet_detail::forEachChart(layout, channels, [&](std::uint32_t chart) {
         synthesize(data.data() + chart * perChart, layout.size(), channels);
     });
+}
+
+std::vector<float> haarSupportCells(std::uint32_t size) {
+    wavelet_detail::checkGrid("haarSupportCells", std::size_t(size) * size, size, 1);
+    std::vector<float> cells(std::size_t(size) * size);
+    for (std::uint32_t u = 0; u < size; ++u)
+        for (std::uint32_t v = 0; v < size; ++v) {
+            const std::uint32_t m = std::max(u, v);
+            const double side = m == 0 ? double(size) : 2.0 * size / double(std::bit_floor(m) * 2);
+            cells[std::size_t(u) * size + v] = float(side * side);
+        }
+    return cells;
 }
 
 template void haarForward2D<float>(std::span<float>, std::uint32_t, std::uint32_t);

@@ -19,6 +19,7 @@
 
 #include <cstdint>
 #include <span>
+#include <vector>
 
 namespace opal {
 
@@ -33,5 +34,11 @@ template <typename T>
 void haarForwardCharts(std::span<T> data, const ChartLayout& layout, std::uint32_t channels = 1);
 template <typename T>
 void haarInverseCharts(std::span<T> data, const ChartLayout& layout, std::uint32_t channels = 1);
+
+// How many cells the basis function at each coefficient position covers: size x size
+// values, the whole grid for the average at [0], (2 size / s)^2 for a detail of the active
+// s x s block (max(row, column) in [s/2, s)). Throws opal::Error unless size is a power of
+// two. The bake ranks transfer coefficients by it (what a light coefficient grows with).
+std::vector<float> haarSupportCells(std::uint32_t size);
 
 }  // namespace opal

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace opal {
@@ -134,6 +135,22 @@ TEST(Haar, ChartsTransformEachChart) {
         haarInverseCharts<float>(data, layout);
         EXPECT_LT(test::relativeError<float>(data, original), 1e-6);
     }
+}
+
+TEST(Haar, SupportCellsCountWhatEachBasisFunctionCovers) {
+    // The independent truth: synthesize each unit coefficient and count its nonzero cells.
+    for (std::uint32_t size : {1u, 2u, 8u, 16u}) {
+        const std::vector<float> cells = haarSupportCells(size);
+        ASSERT_EQ(cells.size(), std::size_t(size) * size);
+        for (std::size_t i = 0; i < cells.size(); ++i) {
+            std::vector<double> grid(cells.size(), 0.0);
+            grid[i] = 1.0;
+            haarInverse2D<double>(grid, size);
+            const auto covered = std::count_if(grid.begin(), grid.end(), [](double v) { return v != 0.0; });
+            EXPECT_EQ(double(covered), double(cells[i])) << "size " << size << " coefficient " << i;
+        }
+    }
+    EXPECT_THROW(haarSupportCells(12), Error);
 }
 
 TEST(Haar, RejectsBadInput) {
