@@ -1,7 +1,12 @@
 #include "schema/asset/array_codec.h"
 
+#include <Imath/half.h>
+
 #include <algorithm>
 #include <bit>
+#include <cmath>
+#include <cstdint>
+#include <string>
 
 namespace opal {
 namespace {
@@ -12,7 +17,133 @@ constexpr std::size_t kBlockValues = 16 * 1024;
 // is byte k of its in-memory representation.
 static_assert(std::endian::native == std::endian::little, "byte planes assume a little-endian host");
 
+// Half planes: the scale exponent e with max |v| 2^-e in (2^14, 2^15], i.e.
+// e = ceil(log2 max) - 15; 0 for an all-zero array. A maximum that rounds up to 2^15 2^e
+// keeps the same e, which makes roundToHalfPlanes idempotent.
+constexpr int kHalfTopExponent = 15;
+constexpr int kMinHalfScale = -160, kMaxHalfScale = 111;  // 65504 2^111 < FLT_MAX
+
+int halfScaleExponent(std::span<const float> values) {
+    float largest = 0.0f;
+    for (float v : values) largest = std::max(largest, std::abs(v));
+    if (largest == 0.0f) return 0;
+    int exponent = 0;
+    const float mantissa = std::frexp(largest, &exponent);  // largest = mantissa 2^exponent, mantissa in [0.5, 1)
+    const int ceilLog2 = mantissa == 0.5f ? exponent - 1 : exponent;
+    return ceilLog2 - kHalfTopExponent;
+}
+
+Imath::half toHalf(float v, int e) { return Imath::half(std::ldexp(v, -e)); }
+float fromHalf(Imath::half h, int e) { return std::ldexp(float(h), e); }
+
 }  // namespace
+
+void writeHalfPlanes(ChunkSink& sink, std::span<const float> values) {
+    const int e = halfScaleExponent(values);
+    sink.writeU32(std::bit_cast<std::uint32_t>(std::int32_t(e)));
+    std::vector<std::byte> block(kBlockValues);
+    for (int plane = 0; plane < 2; ++plane) {
+        for (std::size_t start = 0; start < values.size(); start += kBlockValues) {
+            const std::size_t n = std::min(kBlockValues, values.size() - start);
+            for (std::size_t i = 0; i < n; ++i)
+                block[i] = std::byte((toHalf(values[start + i], e).bits() >> (8 * plane)) & 0xff);
+            sink.write(std::span(block).first(n));
+        }
+    }
+}
+
+std::vector<float> readHalfPlanes(ChunkSource& source, std::uint64_t count, std::string_view what) {
+    const auto e = std::bit_cast<std::int32_t>(source.readU32());
+    if (e < kMinHalfScale || e > kMaxHalfScale)
+        source.fail(std::string(what) + ": half-float scale exponent " + std::to_string(e) + " is outside [" +
+                    std::to_string(kMinHalfScale) + ", " + std::to_string(kMaxHalfScale) + "]");
+    source.requireBytes(count, sizeof(std::uint16_t), what);
+    std::vector<std::uint16_t> bits(static_cast<std::size_t>(count), 0);
+    std::vector<std::byte> block(kBlockValues);
+    for (int plane = 0; plane < 2; ++plane) {
+        for (std::size_t start = 0; start < bits.size(); start += kBlockValues) {
+            const std::size_t n = std::min(kBlockValues, bits.size() - start);
+            source.read(std::span(block).first(n));
+            for (std::size_t i = 0; i < n; ++i) bits[start + i] |= std::uint16_t(std::uint16_t(block[i]) << (8 * plane));
+        }
+    }
+    std::vector<float> values(bits.size());
+    for (std::size_t i = 0; i < bits.size(); ++i) {
+        Imath::half h;
+        h.setBits(bits[i]);
+        if (!h.isFinite()) source.fail(std::string(what) + ": value " + std::to_string(i) + " is not finite");
+        values[i] = fromHalf(h, e);
+    }
+    return values;
+}
+
+void roundToHalfPlanes(std::span<float> values) {
+    const int e = halfScaleExponent(values);
+    for (float& v : values) v = fromHalf(toHalf(v, e), e);
+}
+
+namespace {
+
+std::uint64_t zigzag(std::int64_t v) { return (std::uint64_t(v) << 1) ^ std::uint64_t(v >> 63); }
+std::int64_t unzigzag(std::uint64_t u) { return std::int64_t(u >> 1) ^ -std::int64_t(u & 1); }
+
+std::size_t varintBytes(std::uint64_t u) {
+    std::size_t n = 1;
+    for (; u >= 0x80; u >>= 7) ++n;
+    return n;
+}
+
+}  // namespace
+
+void writeVarints(ChunkSink& sink, std::span<const std::int64_t> values) {
+    std::uint64_t total = 0;
+    for (std::int64_t v : values) total += varintBytes(zigzag(v));
+    sink.writeU64(total);
+    std::vector<std::byte> block;
+    block.reserve(kBlockValues + 10);
+    for (std::int64_t v : values) {
+        for (std::uint64_t u = zigzag(v);; u >>= 7) {
+            const bool more = u >= 0x80;
+            block.push_back(std::byte((u & 0x7f) | (more ? 0x80 : 0)));
+            if (!more) break;
+        }
+        if (block.size() >= kBlockValues) {
+            sink.write(block);
+            block.clear();
+        }
+    }
+    sink.write(block);
+}
+
+std::vector<std::int64_t> readVarints(ChunkSource& source, std::uint64_t count, std::string_view what) {
+    const std::uint64_t total = source.readU64();
+    source.requireBytes(total, 1, what);
+    if (total < count)
+        source.fail(std::string(what) + ": " + std::to_string(count) + " values cannot fit in " +
+                    std::to_string(total) + " bytes");
+    std::vector<std::byte> bytes(static_cast<std::size_t>(total));
+    source.read(bytes);
+    std::vector<std::int64_t> values;
+    values.reserve(static_cast<std::size_t>(count));
+    std::size_t at = 0;
+    while (values.size() < count) {
+        std::uint64_t u = 0;
+        for (int shift = 0;; shift += 7) {
+            if (at == bytes.size())
+                source.fail(std::string(what) + ": the bytes end inside value " + std::to_string(values.size()));
+            const auto b = std::uint64_t(bytes[at++]);
+            if (shift == 63 && b > 1)
+                source.fail(std::string(what) + ": value " + std::to_string(values.size()) + " exceeds 64 bits");
+            u |= (b & 0x7f) << shift;
+            if (!(b & 0x80)) break;
+        }
+        values.push_back(unzigzag(u));
+    }
+    if (at != bytes.size())
+        source.fail(std::string(what) + ": " + std::to_string(bytes.size() - at) + " bytes left after " +
+                    std::to_string(count) + " values");
+    return values;
+}
 
 void writeFloatPlanes(ChunkSink& sink, std::span<const float> values) {
     auto bytes = std::as_bytes(values);

@@ -160,6 +160,9 @@ void ChunkedFileReader::checkIdentity(std::span<const std::byte> h, const FileKi
     if (version_.major > supported.version.major)
         fail("header: format version " + version_.str() + " is newer than this Opal reads (" +
              std::to_string(supported.version.major) + ".x); update Opal");
+    if (version_.major < supported.version.major)
+        fail("header: format version " + version_.str() + " is older than this Opal reads (" +
+             std::to_string(supported.version.major) + ".x); write the file again with this Opal");
 }
 
 void ChunkedFileReader::readHeader(const FileKind& supported) {

@@ -1,7 +1,9 @@
 // The link between a sidecar and the USDA layer it belongs to.
 #include "schema/asset/sidecar.h"
 
+#include "schema/asset/array_codec.h"
 #include "schema/asset/chunked_file.h"
+#include "schema/asset/transfer_value_grid.h"
 #include "schema/asset/little_endian.h"
 #include "schema/asset/xxhash64.h"
 #include "schema/error.h"
@@ -31,6 +33,13 @@ std::uint64_t meshTopologyHash(const RenderMesh& mesh) {
     hashArray(hash, mesh.faceVertexCounts);
     hashArray(hash, mesh.faceVertexIndices);
     return hash.digest();
+}
+
+void roundToStoredPrecision(TranslucentAsset& asset) {
+    const TransferValueGrid grid(asset.layout);
+    for (std::size_t k = 0; k < asset.transfer.perBasis.size(); ++k)
+        grid.round(asset.transfer.perBasis[k], asset.transfer.valueStep(k));
+    roundToHalfPlanes(asset.environment.values);
 }
 
 void checkSidecarMatches(const SidecarHeader& header, const TranslucentAsset& asset,

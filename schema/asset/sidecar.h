@@ -16,9 +16,11 @@
 
 namespace opal {
 
-inline constexpr FileKind kSidecarKind{"SCAT", {1, 0}};
+// 2.0: transfer values on a quantization grid, environment values as half planes (1.0
+// stored both as float planes).
+inline constexpr FileKind kSidecarKind{"SCAT", {2, 0}};
 
-// The chunk tags (all required in version 1.0).
+// The chunk tags (all required in version 2.0).
 namespace sidecar_chunk {
 inline constexpr ChunkTag kHeader{"HEAD"};
 inline constexpr ChunkTag kLayout{"CHRT"};
@@ -57,6 +59,11 @@ void writeSidecar(const std::filesystem::path& path, const TranslucentAsset& ass
 // and environment (all or nothing: on error `asset` is unchanged). Returns the header for
 // checkSidecarMatches. Throws opal::Error naming the file and chunk.
 SidecarHeader readSidecar(const std::filesystem::path& path, TranslucentAsset& asset);
+
+// Rounds the transfer and environment values to what the sidecar stores of them (the
+// transfer's value grids, transfer_value_grid.h; half planes for the environment,
+// array_codec.h), so that a bake measures and keeps exactly what it writes.
+void roundToStoredPrecision(TranslucentAsset& asset);
 
 // Throws unless the header matches the USDA half of `asset`: name, unitsPerMm, K ==
 // basis.K(), vertexCount == mesh.points.size(), mesh topology hash.

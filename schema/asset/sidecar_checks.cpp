@@ -138,8 +138,16 @@ void checkMatrixShape(const SparseMatrix& m, std::uint64_t samples, std::string_
                           ", expected " + str(samples) + " x " + str(samples) + " (one row and column per sample)");
 }
 
+void checkValueStep(double step, std::string_view context, std::string_view what) {
+    if (!(std::isfinite(step) && step >= 0.0))
+        fail(context, std::string(what) + ": value step " + str(step) + " is not a finite number >= 0");
+}
+
 void checkTransfer(const CompressedTransfer& t, std::uint64_t samples, std::string_view context) {
     checkTransferHeader(t.perBasis.size(), t.keepFraction, t.energyFraction, context);
+    if (!t.valueSteps.empty() && t.valueSteps.size() != t.perBasis.size())
+        fail(context, str(std::uint64_t(t.valueSteps.size())) + " value steps for " +
+                          str(std::uint64_t(t.perBasis.size())) + " matrices");
     for (std::size_t k = 0; k < t.perBasis.size(); ++k) {
         const SparseMatrix& m = t.perBasis[k];
         std::string what = "matrix " + str(std::uint64_t(k));
@@ -151,6 +159,7 @@ void checkTransfer(const CompressedTransfer& t, std::uint64_t samples, std::stri
         checkOffsets(offsets, m.rows, m.columns.size(), context, what + " row offsets");
         checkIndices(offsets, m.columns, m.cols, true, context, what + " columns");
         checkFinite(m.values, context, what + " values");
+        checkValueStep(t.valueStep(k), context, what);
     }
 }
 

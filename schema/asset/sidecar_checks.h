@@ -41,6 +41,8 @@ void checkTransferHeader(std::uint64_t basisCount, double keepFraction, double e
                          std::string_view context);
 void checkMatrixShape(const SparseMatrix& m, std::uint64_t samples, std::string_view context,
                       std::string_view what);
+// A matrix's value step (transfer_value_grid.h): finite and >= 0.
+void checkValueStep(double step, std::string_view context, std::string_view what);
 void checkTransfer(const CompressedTransfer& transfer, std::uint64_t samples, std::string_view context);
 void checkEnvironmentHeader(const EnvironmentTransfer& env, std::string_view context);
 // Rows of the environment CSR: 0 (not baked) or samples * fresnelTerms.

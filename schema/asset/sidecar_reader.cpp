@@ -4,6 +4,7 @@
 #include "schema/asset/chunked_file.h"
 #include "schema/asset/sidecar.h"
 #include "schema/asset/sidecar_checks.h"
+#include "schema/asset/transfer_value_grid.h"
 
 namespace opal {
 namespace {
@@ -78,7 +79,20 @@ VertexWeights readVertexWeights(ChunkSource src, std::uint64_t samples, std::uin
     return w;
 }
 
-SparseMatrix readMatrix(ChunkSource& src, std::uint64_t samples, std::size_t k) {
+// Values on the grid of `step` (transfer_value_grid.h), or float32 for step 0.
+std::vector<float> readMatrixValues(ChunkSource& src, const SparseMatrix& m, double step,
+                                    const TransferValueGrid& grid, const std::string& what) {
+    if (step == 0.0) return readFloatPlanes(src, m.columns.size(), what);
+    const std::vector<std::int64_t> q = readVarints(src, m.columns.size(), what);
+    std::vector<float> values(q.size());
+    for (std::uint32_t p = 0; p < m.rows; ++p)
+        for (std::uint64_t e = m.rowOffsets[p]; e < m.rowOffsets[p + 1]; ++e)
+            values[e] = grid.value(q[e], step, p, m.columns[e]);
+    return values;
+}
+
+SparseMatrix readMatrix(ChunkSource& src, std::uint64_t samples, std::size_t k, const TransferValueGrid& grid,
+                        double& step) {
     std::string what = "matrix " + str(k);
     SparseMatrix m;
     m.rows = src.readU32();
@@ -89,19 +103,24 @@ SparseMatrix readMatrix(ChunkSource& src, std::uint64_t samples, std::size_t k) 
     sidecar::checkOffsets<std::uint64_t>(m.rowOffsets, m.rows, entries, src.context(), what + " row offsets");
     m.columns = readRowDeltas<std::uint64_t>(src, m.rowOffsets, what + " columns");
     sidecar::checkIndices<std::uint64_t>(m.rowOffsets, m.columns, m.cols, true, src.context(), what + " columns");
-    m.values = readFloatPlanes(src, entries, what + " values");
+    step = src.readF64();
+    sidecar::checkValueStep(step, src.context(), what);
+    m.values = readMatrixValues(src, m, step, grid, what + " values");
     sidecar::checkFinite(m.values, src.context(), what + " values");
     return m;
 }
 
-CompressedTransfer readTransfer(ChunkSource src, std::uint64_t samples, std::uint32_t expectedK) {
+CompressedTransfer readTransfer(ChunkSource src, const ChartLayout& layout, std::uint32_t expectedK) {
+    const std::uint64_t samples = layout.cells();
+    const TransferValueGrid grid(layout);
     std::uint32_t K = src.readU32();
     CompressedTransfer t;
     t.keepFraction = src.readF64();
     t.energyFraction = src.readF64();
     sidecar::checkTransferHeader(K, t.keepFraction, t.energyFraction, src.context());
     if (K != expectedK) src.fail("K = " + str(K) + " matrices, the header says " + str(expectedK));
-    for (std::size_t k = 0; k < K; ++k) t.perBasis.push_back(readMatrix(src, samples, k));
+    t.valueSteps.resize(K);
+    for (std::size_t k = 0; k < K; ++k) t.perBasis.push_back(readMatrix(src, samples, k, grid, t.valueSteps[k]));
     src.finish();
     return t;
 }
@@ -119,7 +138,7 @@ EnvironmentTransfer readEnvironment(ChunkSource src, std::uint64_t samples) {
     if (rows != 0) env.offsets = src.readArray<std::uint32_t>(rows + 1, "row offsets");
     if (rows != 0) sidecar::checkOffsets<std::uint32_t>(env.offsets, rows, entries, src.context(), "row offsets");
     env.indices = readRowDeltas<std::uint32_t>(src, env.offsets, "cube-map indices");
-    env.values = readFloatPlanes(src, entries, "values");
+    env.values = readHalfPlanes(src, entries, "values");
     src.finish();
     sidecar::checkEnvironment(env, samples, src.context());
     return env;
@@ -136,7 +155,7 @@ SidecarHeader readSidecar(const std::filesystem::path& path, TranslucentAsset& a
     std::uint64_t samples = p.layout.cells();
     p.samples = readSamples(file.open(kSamples), samples);
     p.vertexWeights = readVertexWeights(file.open(kVertexWeights), samples, header.vertexCount);
-    p.transfer = readTransfer(file.open(kTransfer), samples, header.basisCount);
+    p.transfer = readTransfer(file.open(kTransfer), p.layout, header.basisCount);
     p.environment = readEnvironment(file.open(kEnvironment), samples);
     asset.layout = p.layout;
     asset.samples = std::move(p.samples);

@@ -3,6 +3,7 @@
 #include "schema/asset/chunked_file.h"
 #include "schema/asset/sidecar.h"
 #include "schema/asset/sidecar_checks.h"
+#include "schema/asset/transfer_value_grid.h"
 
 namespace opal {
 namespace {
@@ -60,20 +61,32 @@ void writeVertexWeights(ChunkSink& sink, const VertexWeights& w) {
     writeFloatPlanes(sink, w.weights);
 }
 
-void writeMatrix(ChunkSink& sink, const SparseMatrix& m) {
+// Values on the matrix's grid (transfer_value_grid.h), or exactly for step 0.
+void writeMatrixValues(ChunkSink& sink, const SparseMatrix& m, double step, const TransferValueGrid& grid) {
+    sink.writeF64(step);
+    if (step == 0.0) return writeFloatPlanes(sink, m.values);
+    std::vector<std::int64_t> q(m.values.size());
+    for (std::uint32_t p = 0; p < m.rows; ++p)
+        for (std::uint64_t e = m.rowOffsets[p]; e < m.rowOffsets[p + 1]; ++e)
+            q[e] = grid.quantize(m.values[e], step, p, m.columns[e]);
+    writeVarints(sink, q);
+}
+
+void writeMatrix(ChunkSink& sink, const SparseMatrix& m, double step, const TransferValueGrid& grid) {
     sink.writeU32(m.rows);
     sink.writeU32(m.cols);
     sink.writeU64(m.columns.size());
     sink.writeArray<std::uint64_t>(m.rowOffsets);
     writeRowDeltas<std::uint64_t>(sink, m.rowOffsets, m.columns);
-    writeFloatPlanes(sink, m.values);
+    writeMatrixValues(sink, m, step, grid);
 }
 
-void writeTransfer(ChunkSink& sink, const CompressedTransfer& t) {
+void writeTransfer(ChunkSink& sink, const CompressedTransfer& t, const ChartLayout& layout) {
     sink.writeU32(static_cast<std::uint32_t>(t.perBasis.size()));
     sink.writeF64(t.keepFraction);
     sink.writeF64(t.energyFraction);
-    for (const SparseMatrix& m : t.perBasis) writeMatrix(sink, m);
+    const TransferValueGrid grid(layout);
+    for (std::size_t k = 0; k < t.perBasis.size(); ++k) writeMatrix(sink, t.perBasis[k], t.valueStep(k), grid);
 }
 
 void writeEnvironment(ChunkSink& sink, const EnvironmentTransfer& env, std::uint64_t samples) {
@@ -83,7 +96,7 @@ void writeEnvironment(ChunkSink& sink, const EnvironmentTransfer& env, std::uint
     sink.writeU64(env.indices.size());
     sink.writeArray<std::uint32_t>(env.offsets);
     writeRowDeltas<std::uint32_t>(sink, env.offsets, env.indices);
-    writeFloatPlanes(sink, env.values);
+    writeHalfPlanes(sink, env.values);
 }
 
 }  // namespace
@@ -96,7 +109,7 @@ void writeSidecar(const std::filesystem::path& path, const TranslucentAsset& a,
         {kLayout, ChunkCodec::Raw, true, [&](ChunkSink& s) { writeLayout(s, a.layout); }},
         {kSamples, ChunkCodec::Zstd, true, [&](ChunkSink& s) { writeSamples(s, a.samples); }},
         {kVertexWeights, ChunkCodec::Zstd, true, [&](ChunkSink& s) { writeVertexWeights(s, a.vertexWeights); }},
-        {kTransfer, ChunkCodec::Zstd, true, [&](ChunkSink& s) { writeTransfer(s, a.transfer); }},
+        {kTransfer, ChunkCodec::Zstd, true, [&](ChunkSink& s) { writeTransfer(s, a.transfer, a.layout); }},
         {kEnvironment, ChunkCodec::Zstd, true,
          [&](ChunkSink& s) { writeEnvironment(s, a.environment, a.layout.cells()); }},
     };

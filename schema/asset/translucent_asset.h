@@ -47,8 +47,13 @@ struct VertexWeights {
 // matrix is samples x samples, with strictly ascending columns within each row.
 struct CompressedTransfer {
     std::vector<SparseMatrix> perBasis;  // K
+    // Per matrix, the step of the grid its values are stored on (transfer_value_grid.h);
+    // 0: stored exactly. Empty means all 0.
+    std::vector<double> valueSteps;
     double keepFraction = 0.01;          // step 1
-    double energyFraction = 0.97;        // step 2
+    double energyFraction = 0.99995;     // step 2
+
+    double valueStep(std::size_t k) const { return k < valueSteps.size() ? valueSteps[k] : 0.0; }
 };
 
 // Environment light transfer (Ng et al. 2003): per sample, visibility x cosine over a

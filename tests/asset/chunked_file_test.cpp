@@ -118,12 +118,13 @@ TEST(ChunkedFile, WriterRejectsBadChunkListsAndPaths) {
     EXPECT_TRUE(dir.entries().empty());
 }
 
-TEST(ChunkedFile, ReaderRejectsForeignNewerAndMissingFiles) {
+TEST(ChunkedFile, ReaderRejectsForeignNewerOlderAndMissingFiles) {
     TempDir dir;
     auto path = dir / "k.opal";
     writeChunkedFile(path, kKind, {});
     expectError([&] { ChunkedFileReader(path, {"SCAT", {1, 0}}); }, {"k.opal", "'TEST' file, expected 'SCAT'"});
     ChunkedFileReader(path, {"TEST", {1, 0}});  // newer minor: readable
+    expectError([&] { ChunkedFileReader(path, {"TEST", {2, 0}}); }, {"k.opal", "format version 1.2 is older", "2.x"});
 
     std::vector<std::byte> file = test::readBytes(path);
     test::putU16(file, 12, 2);  // major version

@@ -42,6 +42,7 @@ void expectSameSidecarParts(const TranslucentAsset& a, const TranslucentAsset& b
     EXPECT_EQ(a.transfer.keepFraction, b.transfer.keepFraction);
     EXPECT_EQ(a.transfer.energyFraction, b.transfer.energyFraction);
     ASSERT_EQ(a.transfer.perBasis.size(), b.transfer.perBasis.size());
+    for (std::size_t k = 0; k < a.transfer.perBasis.size(); ++k) EXPECT_EQ(a.transfer.valueStep(k), b.transfer.valueStep(k));
     for (std::size_t k = 0; k < a.transfer.perBasis.size(); ++k) {
         const SparseMatrix &x = a.transfer.perBasis[k], &y = b.transfer.perBasis[k];
         EXPECT_EQ(x.rows, y.rows);
@@ -110,6 +111,11 @@ void putBytes(std::vector<std::byte>& b, std::size_t at, std::uint32_t v) {
     for (int i = 0; i < 4; ++i) b[at + i] = std::byte((v >> (8 * i)) & 0xFF);
 }
 
+void putF64(std::vector<std::byte>& b, std::size_t at, double v) {
+    const auto u = std::bit_cast<std::uint64_t>(v);
+    for (int i = 0; i < 8; ++i) b[at + i] = std::byte((u >> (8 * i)) & 0xFF);
+}
+
 // Float f as value `index` of a byte-plane array of `count` floats starting at `at`.
 void putPlaneFloat(std::vector<std::byte>& b, std::size_t at, std::size_t count, std::size_t index, float f) {
     auto u = std::bit_cast<std::uint32_t>(f);
@@ -119,6 +125,7 @@ void putPlaneFloat(std::vector<std::byte>& b, std::size_t at, std::size_t count,
 TEST(Sidecar, RoundTripIsBitExact) {
     TempDir dir;
     TranslucentAsset original = test::syntheticAsset();
+    roundToStoredPrecision(original);  // transfer and environment values are stored as halves
     writeSidecar(dir / "cube.opal", original);
     TranslucentAsset loaded;
     SidecarHeader header = readSidecar(dir / "cube.opal", loaded);
@@ -132,12 +139,29 @@ TEST(Sidecar, RoundTripIsBitExact) {
     EXPECT_EQ(dir.entries(), std::vector<std::string>{"cube.opal"});
 }
 
+TEST(Sidecar, TransferAndEnvironmentValuesComeBackAsRoundToStoredPrecisionSays) {
+    TempDir dir;
+    const TranslucentAsset original = test::syntheticAsset();
+    writeSidecar(dir / "cube.opal", original);
+    TranslucentAsset loaded;
+    readSidecar(dir / "cube.opal", loaded);
+    TranslucentAsset rounded = original;
+    roundToStoredPrecision(rounded);
+    expectSameSidecarParts(rounded, loaded);
+    // and rounding changed them where the format rounds: matrices with a value step (the
+    // synthetic asset's matrix 0 has none) and the environment's half floats
+    EXPECT_EQ(bits(original.transfer.perBasis[0].values), bits(rounded.transfer.perBasis[0].values));
+    EXPECT_NE(bits(original.transfer.perBasis[1].values), bits(rounded.transfer.perBasis[1].values));
+    EXPECT_NE(bits(original.environment.values), bits(rounded.environment.values));
+}
+
 TEST(Sidecar, EnvironmentMayBeAbsent) {
     TempDir dir;
     TranslucentAsset original = test::syntheticAsset(2);
     original.environment.offsets.clear();
     original.environment.indices.clear();
     original.environment.values.clear();
+    roundToStoredPrecision(original);
     writeSidecar(dir / "noenv.opal", original);
     TranslucentAsset loaded;
     readSidecar(dir / "noenv.opal", loaded);
@@ -196,7 +220,7 @@ TEST(Sidecar, EveryByteFlipIsRejectedNamingTheChunk) {
     EXPECT_EQ(test::readBytes(path), whole);
 }
 
-TEST(Sidecar, NewerMajorVersionIsRejectedNewerMinorAccepted) {
+TEST(Sidecar, OtherMajorVersionsAreRejectedNewerMinorAccepted) {
     TempDir dir;
     auto path = dir / "v.opal";
     writeSidecar(path, test::syntheticAsset());
@@ -206,10 +230,14 @@ TEST(Sidecar, NewerMajorVersionIsRejectedNewerMinorAccepted) {
     test::writeBytes(path, file);
     TranslucentAsset asset;
     readSidecar(path, asset);
-    test::putU16(file, 12, 2);  // major 2.7
+    test::putU16(file, 12, 3);  // major 3.7
     test::resealHeader(file);
     test::writeBytes(path, file);
-    expectContains(errorOf([&] { readSidecar(path, asset); }), {"v.opal", "version 2.7 is newer", "update Opal"});
+    expectContains(errorOf([&] { readSidecar(path, asset); }), {"v.opal", "version 3.7 is newer", "update Opal"});
+    test::putU16(file, 12, 1);  // major 1.7: float planes, older than this reader
+    test::resealHeader(file);
+    test::writeBytes(path, file);
+    expectContains(errorOf([&] { readSidecar(path, asset); }), {"v.opal", "version 1.7 is older", "write the file again"});
 }
 
 struct ContentCase {
@@ -231,11 +259,29 @@ TEST(Sidecar, ContentInconsistenciesAreRejectedNamingTheChunk) {
         {"VWGT", [](auto& b, auto&) { putBytes(b, 4 + 8 + 4, 0xFFFF); }, "vertex offsets decrease at row 1"},
         {"TRNS", [&](auto& b, auto&) { putBytes(b, 20 + 16 + (n + 1) * 8, 32); }, ": index 32 >= 32"},
         {"TRNS",
-         [&](auto& b, const TranslucentAsset& a) {
-             std::size_t nnz = a.transfer.perBasis[0].values.size();
-             putPlaneFloat(b, 20 + 16 + (n + 1) * 8 + nnz * 4, nnz, 0, std::nanf(""));
+         [&](auto& b, const TranslucentAsset& a) {  // matrix 0 is stored exactly (step 0)
+             const std::size_t nnz = a.transfer.perBasis[0].values.size();
+             putPlaneFloat(b, 20 + 16 + (n + 1) * 8 + nnz * 4 + 8, nnz, 0, std::nanf(""));
          },
          "matrix 0 values[0] = nan is not finite"},
+        {"TRNS",
+         [&](auto& b, const TranslucentAsset& a) {
+             const std::size_t nnz = a.transfer.perBasis[0].values.size();
+             putF64(b, 20 + 16 + (n + 1) * 8 + nnz * 4, -0.5);
+         },
+         "matrix 0: value step -0.5 is not a finite number >= 0"},
+        {"ENVT",
+         [&](auto& b, const TranslucentAsset& a) {  // half NaN 0x7e00 as value 0's two planes
+             const std::size_t nnz = a.environment.values.size(), at = 24 + (2 * n + 1) * 4 + nnz * 4 + 4;
+             b[at] = std::byte{0x00};
+             b[at + nnz] = std::byte{0x7e};
+         },
+         "values: value 0 is not finite"},
+        {"ENVT",
+         [&](auto& b, const TranslucentAsset& a) {
+             putBytes(b, 24 + (2 * n + 1) * 4 + a.environment.values.size() * 4, 112);
+         },
+         "values: half-float scale exponent 112 is outside [-160, 111]"},
         {"TRNS", [&](auto& b, auto&) { putBytes(b, 24, 31); }, "matrix 0: 32 x 31, expected 32 x 32"},
         {"ENVT", [&](auto& b, auto&) { putBytes(b, 24 + (2 * n + 1) * 4, 24); }, ": index 24 >= 24"},
         {"ENVT", [](auto& b, auto&) { putBytes(b, 0, 3); }, "cube face size 3 is not a power of two"},

@@ -92,6 +92,7 @@ inline TranslucentAsset syntheticAsset(std::uint32_t seed = 1) {
     a.vertexWeights = randomWeights(rng, a.mesh.points.size(), n);
     a.transfer.keepFraction = 0.25;
     a.transfer.energyFraction = 0.97;
+    a.transfer.valueSteps = {0.0, 1e-3, 0.02};  // matrix 0 stored exactly, 1 and 2 on grids
     for (int k = 0; k < 3; ++k) {
         SparseMatrix m;
         m.rows = m.cols = n;
