@@ -146,7 +146,8 @@ TranslucentAsset bakeAsset(const BakeOptions& options, ProgressSink* progress, c
 
     SubdivisionOptions subdivision;
     subdivision.scheme = chooseScheme(options, control, imported.authoredScheme);
-    subdivision.level = int(options.level);
+    subdivision.level = int(options.level ? *options.level
+                                          : automaticSubdivisionLevel(control, subdivision.scheme, options.samples));
     {
         StageScope stage(progress, "subdivide", 1);
         asset.mesh = subdivide(control, subdivision);
@@ -181,11 +182,12 @@ TranslucentAsset bakeAsset(const BakeOptions& options, ProgressSink* progress, c
     clock.lap("transfer");
 
     asset.environment = buildEnvironmentTransfer(asset.mesh, asset.samples, options.visibility, progress, cancel);
+    roundToStoredPrecision(asset);  // what the sidecar keeps, so the report measures it
     clock.lap("visibility");
 
     asset.bake.source = options.input;
     asset.bake.scheme = std::string(subdivisionSchemeName(subdivision.scheme));
-    asset.bake.level = options.level;
+    asset.bake.level = std::uint32_t(subdivision.level);
     asset.bake.seed = options.seed;
     asset.bake.envTerms = options.visibility.terms;
 
@@ -198,6 +200,7 @@ TranslucentAsset bakeAsset(const BakeOptions& options, ProgressSink* progress, c
     r.samples = asset.samples.size();
     r.charts = asset.layout.charts;
     r.grid = asset.layout.size();
+    r.subdivisionLevel = asset.bake.level;
     r.renderVertices = asset.mesh.points.size();
     r.peakRssBytes = peakRssBytes();
     return asset;
