@@ -19,12 +19,18 @@ namespace opal {
 struct BakeOptions {
     std::string input;                // a mesh file, or "builtin:candle"
     std::string scheme = "auto";      // auto | catmullClark | loop
-    std::uint32_t level = 2;          // uniform subdivision level
+    std::optional<std::uint32_t> level;  // uniform subdivision level; empty: automaticSubdivisionLevel
     std::uint64_t samples = 16384;    // N = M x 4^n
     double unitsPerMm = 1.0;          // scene units per millimetre
     std::optional<EditableRange> range;  // default: covering the ten presets
     std::string material = "marble";  // the asset's default material: a preset name
-    int basisCount = 12;              // K
+    // K. 16, not the paper's 12: a bake's basis reaches r_max = the asset's diagonal, and
+    // there 12 functions miss the profiles' tails. Measured on the built-in candle in wax
+    // (4,096 samples, lossless transfer, vs the exact dipole): K = 12 1.07% overall and
+    // 4.2% on the candle's dim side, K = 16 0.07% and 0.14%. On the 65,536-sample bunny
+    // K = 16 costs 153 s instead of 123 s and 6.0 GB instead of 4.5 GB at peak; the
+    // sidecar hardly grows (step 2 spends little on the small-eigenvalue matrices).
+    int basisCount = 16;
     TransferSettings transfer;
     VisibilitySettings visibility;
     std::uint64_t seed = 1;
@@ -34,6 +40,7 @@ struct BakeReport {
     std::uint64_t samples = 0;
     std::uint32_t charts = 0;
     std::uint32_t grid = 0;  // 2^n
+    std::uint32_t subdivisionLevel = 0;  // the level used (chosen when BakeOptions::level is empty)
     std::uint64_t renderVertices = 0;
     TransferStats transfer;
     std::uint64_t sidecarBytes = 0;

@@ -17,7 +17,7 @@ namespace {
 nlohmann::ordered_json optionsJson(const BakeOptions& o) {
     return {{"input", o.input},
             {"scheme", o.scheme},
-            {"level", o.level},
+            {"level", o.level ? nlohmann::ordered_json(*o.level) : nlohmann::ordered_json("auto")},
             {"samples", o.samples},
             {"units_per_mm", o.unitsPerMm},
             {"material", o.material},
@@ -44,6 +44,7 @@ void writeBakeReport(const std::filesystem::path& path, const BakeOptions& optio
     j["samples"] = r.samples;
     j["charts"] = r.charts;
     j["grid"] = r.grid;
+    j["subdivision_level"] = r.subdivisionLevel;
     j["render_vertices"] = r.renderVertices;
     j["raw_bytes"] = r.transfer.rawBytes;
     j["step1_bytes"] = r.transfer.step1Bytes;
@@ -78,7 +79,7 @@ std::string formatBakeSummary(const std::filesystem::path& stem, const BakeRepor
                   "opal-bake: wrote %s.usda and %s.opal\n"
                   "  samples %llu (%u charts of %ux%u), render vertices %llu\n"
                   "  transfer  raw %.1f MB | step 1 (Haar) %.1f MB | step 2 (CDF 9/7) %.1f MB | sidecar %.1f MB\n"
-                  "  compression %.0fx, energy kept %.4f, transfer rel. RMSE %.4f\n"
+                  "  compression %.0fx, energy kept %.6f, transfer rel. RMSE %.4f\n"
                   "  %.1f s, peak memory %.0f MB\n",
                   stem.string().c_str(), stem.string().c_str(), (unsigned long long)r.samples, r.charts, r.grid,
                   r.grid, (unsigned long long)r.renderVertices, mb(r.transfer.rawBytes), mb(r.transfer.step1Bytes),

@@ -9,7 +9,7 @@
 
 namespace opal {
 
-// Writes the report atomically. Keys: samples, charts, grid, render_vertices, raw_bytes,
+// Writes the report atomically. Keys: samples, charts, grid, subdivision_level, render_vertices, raw_bytes,
 // step1_bytes, step2_bytes, sidecar_bytes, compression_ratio, energy_kept,
 // transfer_rel_rmse, seconds {stage: s, total}, peak_rss_bytes, warnings, options.
 void writeBakeReport(const std::filesystem::path& path, const BakeOptions& options, const BakeReport& report);

@@ -1,5 +1,7 @@
 #include "bake/subdivision.h"
 
+#include "bake/mesh_edges.h"
+
 #include "schema/error.h"
 
 #include <opensubdiv/far/primvarRefiner.h>
@@ -173,6 +175,27 @@ SubdivisionScheme resolveSubdivisionScheme(const ControlMesh& mesh, SubdivisionS
                     " corners (" + std::to_string(others) + " non-triangular faces); use catmullClark");
     }
     return requested;
+}
+
+std::uint32_t automaticSubdivisionLevel(const ControlMesh& mesh, SubdivisionScheme scheme, std::uint64_t samples) {
+    scheme = resolveSubdivisionScheme(mesh, scheme);
+    const MeshEdges edges(mesh.faceVertexCounts, mesh.faceVertexIndices);
+    double vertices = double(mesh.positions.size()), edgeCount = double(edges.edges().size());
+    double faces = double(mesh.faceCount()), corners = double(mesh.faceVertexIndices.size());
+    std::uint32_t level = 0;
+    for (; level < kMaxAutomaticLevel && vertices < double(samples); ++level) {
+        if (scheme == SubdivisionScheme::Loop) {  // each triangle into 4: a new vertex per edge
+            vertices += edgeCount;
+            edgeCount = 2.0 * edgeCount + 3.0 * faces;
+            faces *= 4.0;
+        } else {  // each n-gon into n quads: a new vertex per edge and per face
+            vertices += edgeCount + faces;
+            edgeCount = 2.0 * edgeCount + corners;
+            faces = corners;
+            corners = 4.0 * faces;
+        }
+    }
+    return level;
 }
 
 RenderMesh subdivide(const ControlMesh& mesh, const SubdivisionOptions& options) {

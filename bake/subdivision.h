@@ -7,6 +7,7 @@
 #include "bake/control_mesh.h"
 #include "schema/asset/translucent_asset.h"
 
+#include <cstdint>
 #include <string_view>
 
 namespace opal {
@@ -32,6 +33,16 @@ std::string_view subdivisionSchemeName(SubdivisionScheme scheme);
 // What Automatic means for this mesh; a forced Loop on a mesh with non-triangular faces is
 // refused with an opal::Error naming the first such face.
 SubdivisionScheme resolveSubdivisionScheme(const ControlMesh& mesh, SubdivisionScheme requested);
+
+// The level `--level auto` picks: the smallest in [0, kMaxAutomaticLevel] whose render
+// mesh has at least as many vertices as the bake has samples (the finest level if none
+// does). Subsurface radiance reaches the render mesh through per-vertex interpolation of
+// the samples, so vertices beyond the sample count add geometry but no shading detail: a
+// dense scan renders at level 0, a coarse cage is refined until it is as fine as the
+// samples. Counted from the topology (uniform refinement: Catmull-Clark and bilinear split
+// every n-gon into n quads, Loop every triangle into 4), without refining.
+inline constexpr std::uint32_t kMaxAutomaticLevel = 6;
+std::uint32_t automaticSubdivisionLevel(const ControlMesh& mesh, SubdivisionScheme scheme, std::uint64_t samples);
 
 // Refines a validated control mesh (see validateAndRepair). Boundaries interpolate edges
 // and corners. Normals are unit, normalize(dP/du x dP/dv), which points to the side the

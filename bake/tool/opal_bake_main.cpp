@@ -47,27 +47,42 @@ int main(int argc, char** argv) {
     app.add_option("--scheme", options.scheme,
                    "subdivision scheme; auto: a .usda's subdivisionScheme, else loop for all-triangle meshes, "
                    "else catmullClark")
-        ->check(CLI::IsMember({"auto", "catmullClark", "loop"}));
-    app.add_option("--level", options.level, "uniform subdivision level")->check(CLI::Range(0, 6));
-    app.add_option("--samples", options.samples, "surface samples N = M x 4^n (e.g. 16384 = 4 x 64 x 64)");
+        ->check(CLI::IsMember({"auto", "catmullClark", "loop"}))
+        ->capture_default_str();
+    std::string level = "auto";
+    app.add_option("--level", level,
+                   "uniform subdivision level 0-6, or auto: the coarsest level with at least as many render-mesh "
+                   "vertices as samples")
+        ->check(CLI::IsMember({"auto", "0", "1", "2", "3", "4", "5", "6"}))
+        ->capture_default_str();
+    app.add_option("--samples", options.samples, "surface samples N = M x 4^n (e.g. 16384 = 4 x 64 x 64)")
+        ->capture_default_str();
     app.add_option("--units-per-mm", options.unitsPerMm, "scene units per millimetre")
-        ->check(CLI::PositiveNumber);
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
     app.add_option("--range", range,
                    "editable range: 'presets' (default) or sigmaS=MIN:MAX,sigmaA=MIN:MAX,eta=MIN:MAX (mm^-1)");
-    app.add_option("--material", options.material, "default material preset");
-    app.add_option("--basis", options.basisCount, "PCA basis functions K")->check(CLI::Range(1, 64));
+    app.add_option("--material", options.material, "default material preset")->capture_default_str();
+    app.add_option("--basis", options.basisCount, "PCA basis functions K")->check(CLI::Range(1, 64))->capture_default_str();
     app.add_option("--keep", options.transfer.keepFraction, "step 1: fraction of Haar coefficients kept per row")
-        ->check(CLI::Range(1e-6, 1.0));
-    app.add_option("--energy", options.transfer.energyFraction, "step 2: fraction of the CDF 9/7 energy kept")
-        ->check(CLI::Range(1e-6, 1.0));
-    app.add_option("--env-res", options.visibility.cubeFaceSize, "environment cube map face size (power of two)");
-    app.add_option("--env-terms", options.visibility.terms, "Haar terms kept per sample for the environment");
-    app.add_option("--seed", options.seed, "random seed (same seed, same bytes)");
+        ->check(CLI::Range(1e-6, 1.0))
+        ->capture_default_str();
+    app.add_option("--energy", options.transfer.energyFraction,
+                   "step 2: fraction of the weighted CDF 9/7 energy kept; the transfer's relative error is about "
+                   "sqrt(1 - energy)")
+        ->check(CLI::Range(1e-6, 1.0))
+        ->capture_default_str();
+    app.add_option("--env-res", options.visibility.cubeFaceSize, "environment cube map face size (power of two)")
+        ->capture_default_str();
+    app.add_option("--env-terms", options.visibility.terms, "Haar terms kept per sample for the environment")
+        ->capture_default_str();
+    app.add_option("--seed", options.seed, "random seed (same seed, same bytes)")->capture_default_str();
     app.add_option("--json", jsonPath, "write a JSON report to this file");
     app.add_flag("-q,--quiet", quiet, "no progress output");
     try {
         app.parse(argc, argv);
         if (!range.empty() && range != "presets") options.range = parseRange(range);
+        if (level != "auto") options.level = std::uint32_t(std::stoul(level));
     } catch (const CLI::ParseError& e) {
         // app.exit prints the message; CLI11's own codes (105 for a failed check, 106 for a
         // missing option, ...) would break the documented contract: bad arguments exit 2.

@@ -194,7 +194,7 @@ TEST_F(ExactCandle, KeepingEverythingReproducesTheExactGatherPerBasisFunction) {
     ASSERT_EQ(a.layout.charts, 2u);
     ASSERT_EQ(a.layout.size(), 16u);
     const int K = a.basis.K();
-    ASSERT_EQ(K, 12);
+    ASSERT_EQ(K, BakeOptions{}.basisCount);
     ASSERT_EQ(a.transfer.perBasis.size(), std::size_t(K));
     EXPECT_EQ(a.transfer.keepFraction, 1.0);
     EXPECT_EQ(a.transfer.energyFraction, 1.0);

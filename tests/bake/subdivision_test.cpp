@@ -189,6 +189,29 @@ TEST(Subdivision, RefusesBadLevels) {
     }
 }
 
+TEST(Subdivision, AutomaticLevelIsTheCoarsestWithAsManyVerticesAsSamples) {
+    // The refined vertex counts the rule is computed from, against OpenSubdiv's own
+    // refinement: closed quads, closed triangles, a torus and an open grid (boundary edges).
+    const std::pair<ControlMesh, SubdivisionScheme> meshes[] = {{test::cube(), SubdivisionScheme::CatmullClark},
+                                                                {test::icosahedron(), SubdivisionScheme::Loop},
+                                                                {test::torus(3.0f, 1.0f, 6, 4), SubdivisionScheme::CatmullClark},
+                                                                {test::octahedron(), SubdivisionScheme::CatmullClark},
+                                                                {test::planeGrid(3), SubdivisionScheme::CatmullClark}};
+    for (const auto& [mesh, scheme] : meshes) {
+        std::uint64_t previous = 0;
+        for (int level = 0; level <= 4; ++level) {
+            const std::uint64_t vertices = subdivide(mesh, {scheme, level}).points.size();
+            if (level > 0) {
+                EXPECT_EQ(automaticSubdivisionLevel(mesh, scheme, previous + 1), std::uint32_t(level)) << level;
+            }
+            EXPECT_EQ(automaticSubdivisionLevel(mesh, scheme, vertices), std::uint32_t(level)) << level;
+            previous = vertices;
+        }
+    }
+    EXPECT_EQ(automaticSubdivisionLevel(test::cube(), SubdivisionScheme::Automatic, 1), 0u);
+    EXPECT_EQ(automaticSubdivisionLevel(test::cube(), SubdivisionScheme::Automatic, 1u << 30), kMaxAutomaticLevel);
+}
+
 TEST(Subdivision, ParsesSchemeNames) {
     EXPECT_EQ(parseSubdivisionScheme("auto"), SubdivisionScheme::Automatic);
     EXPECT_EQ(parseSubdivisionScheme("catmullClark"), SubdivisionScheme::CatmullClark);

@@ -40,16 +40,16 @@ namespace {
 constexpr std::uint64_t kSamples = 2048;
 
 // The compression the test holds to 1%. Measured at 2,048 samples (compressed vs
-// reference, per light point / distant / dome; the basis alone is 0.05-0.06% throughout):
-//   keep 0.01, energy 0.97 (the defaults)  sphere 11.3 / 10.5 / 8.9%   torus 16.8 / 15.2 / 12.9%
-//   keep 0.05, energy 0.9999 (main job)    sphere 0.89 / 0.84 / 0.81%  torus 1.12 / 1.26 / 1.06%
-//   keep 0.05, energy 1                    sphere 0.63 / 0.62 / 0.51%  torus 0.84 / 1.01 / 0.71%
-//   keep 0.1,  energy 0.9999 (this test)   sphere 0.57 / 0.53 / 0.56%  torus 0.71 / 0.73 / 0.70%
-//   keep 0.2,  energy 0.9999               sphere 0.43 / 0.40 / 0.43%  torus 0.57 / 0.58 / 0.57%
-// Step 2 dropping 1e-4 of the energy alone costs ~sqrt(1e-4) = 1% of the transfer's
-// norm, so the main job's settings sit at the threshold; DISABLED_CompressionSweep
-// re-measures the table.
-TransferSettings testedSettings() { return TransferSettings{0.1, 0.9999}; }
+// reference, per light point / distant / dome; the basis alone is 0.05-0.06% throughout;
+// DISABLED_CompressionSweep re-measures):
+//   keep 0.01, energy 0.99995 (the defaults)  sphere 6.2 / 6.2 / 5.0%   torus 12.5 / 12.4 / 9.2%
+//   keep 0.03, energy 0.99995                 sphere 1.3 / 1.2 / 1.1%   torus 2.1 / 2.5 / 1.7%
+//   keep 0.1,  energy 0.9999                  sphere 0.48 / 0.43 / 0.43%  torus 0.80 / 0.80 / 0.67%
+//   keep 0.1,  energy 0.99995 (this test)     sphere 0.35 / 0.34 / 0.32%  torus 0.59 / 0.60 / 0.50%
+// Step 1's error falls as a row keeps more coefficients across the profile's footprint:
+// 1% of 2,048 samples is 21 per row, too few for these small bakes, while the same 1% of
+// 65,536 samples (655 per row) leaves the bunny at 0.67% (opal-bench bake).
+TransferSettings testedSettings() { return TransferSettings{0.1, TransferSettings{}.energyFraction}; }
 
 // ---- baking -------------------------------------------------------------------------
 
@@ -254,12 +254,12 @@ TEST(BakedRelighting, LosslessBakeLeavesOnlyTheBasisError) {
 // --gtest_also_run_disabled_tests; 2.5 minutes on this machine).
 TEST(BakedRelighting, DISABLED_CompressionSweep) {
     for (const Shape& shape : {sphere(), torus()})
-        for (double keep : {0.01, 0.05, 0.1, 0.2})
-            for (double energy : {0.97, 0.9999, 1.0}) {
+        for (double keep : {0.01, 0.03, 0.1})
+            for (double energy : {0.9999, TransferSettings{}.energyFraction, 1.0}) {
                 const auto asset = bake(shape.control, shape.name, TransferSettings{keep, energy}, kSamples);
                 for (LightCase light : kLights) {
                     const Errors e = measure(asset, light);
-                    std::printf("[ sweep    ] %s keep %.2f energy %.4f %s: %.2f%% (basis alone %.3f%%, "
+                    std::printf("[ sweep    ] %s keep %.2f energy %.5f %s: %.2f%% (basis alone %.3f%%, "
                                 "compression alone %.2f%%)\n",
                                 shape.name, keep, energy, name(light), 100.0 * e.compressed, 100.0 * e.basis,
                                 100.0 * e.compression);
