@@ -4,7 +4,8 @@
 // the dense N x N matrix:
 //   step 1 (light dimension, w0): each row of T_k, laid out on the chart grid, is Haar
 //          transformed and its `keepFraction` most important coefficients kept, ranked
-//          by |c_j| times the area the basis function covers (transfer_builder.cpp);
+//          by |c_j| area_j^0.75, area_j the cells basis function j covers
+//          (transfer_builder.cpp);
 //   step 2 (spatial dimension, w1): every column of the retained matrix is transformed
 //          along the output dimension with CDF 9/7, and the coefficients of all K
 //          matrices that carry `energyFraction` of their weighted energy are kept

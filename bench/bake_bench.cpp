@@ -5,16 +5,15 @@
 //
 // Default table (meshes from the shared test assets, ../shared/assets beside the source
 // tree, or --assets / $OPAL_SHARED_ASSETS):
-//   - the Stanford bunny (watertight, 69,664 triangles, millimetres) at level 0, 16,384 and
-//     65,536 samples. Level 0 still moves the vertices to the Loop limit surface with limit
-//     normals; the scan is already denser than the samples (34,834 vertices, about 0.8 mm
-//     apart against 1.1 mm between samples at 65,536), so each level would only quadruple
-//     the render mesh, the visibility scene and the USDA for no visible gain.
+//   - the Stanford bunny (watertight, 69,664 triangles, millimetres) at 16,384 and 65,536
+//     samples with opal-bake's defaults: --level auto picks level 0 at 16,384 (the scan's
+//     34,834 vertices outnumber the samples) and level 1 at 65,536.
 //   - Spot's Catmull-Clark cage (180 polygons) at level 3 (about 11,500 quads), 16,384
 //     samples, 0.0171 units per mm: Spot's limit surface is 1.71 units long (nose to tail,
 //     z), so Spot is a 100 mm cow figurine (marble's few-mm mean free path then reads as
 //     translucent).
-// Other meshes: --mesh PATH (repeatable) with --samples (repeatable), --level and
+// The lvl column is the level the bake used. Other meshes: --mesh PATH (repeatable) with
+// --samples (repeatable), --level and
 // --units-per-mm.
 #include "bench/output.h"
 #include "bench/subcommand.h"
@@ -67,14 +66,14 @@ struct Row {
     std::string name;  // label in the table
     fs::path mesh;
     std::uint64_t samples = 16384;
-    std::uint32_t level = 2;
+    std::string level = "auto";  // as opal-bake's --level
     double unitsPerMm = 1.0;
 };
 
 struct Options {
     std::vector<std::string> meshes;
     std::vector<std::uint64_t> samples;
-    std::uint32_t level = 2;
+    std::string level = "auto";
     double unitsPerMm = 1.0;
     std::uint64_t maxSamples = 0;  // 0: no limit
     fs::path outputDir = "out/bake";
@@ -117,7 +116,7 @@ std::vector<Row> defaultRows(const Options& o) {
     const fs::path meshes = sharedAssets(o) / "meshes";
     const fs::path bunny = meshes / "stanford-bunny_watertight_quartet.obj";
     const fs::path spot = meshes / "spot_control_mesh.obj";
-    return {{"bunny", bunny, 16384, 0, 1.0}, {"bunny", bunny, 65536, 0, 1.0}, {"spot", spot, 16384, 3, 0.0171}};
+    return {{"bunny", bunny, 16384, "auto", 1.0}, {"bunny", bunny, 65536, "auto", 1.0}, {"spot", spot, 16384, "3", 0.0171}};
 }
 
 std::vector<Row> requestedRows(const Options& o) {
@@ -146,7 +145,7 @@ int runBake(const fs::path& exe, const Row& row, const fs::path& stem, const fs:
     std::vector<std::string> args = {exe.string(),       row.mesh.string(),
                                      "-o",               stem.string(),
                                      "--samples",        std::to_string(row.samples),
-                                     "--level",          std::to_string(row.level),
+                                     "--level",          row.level,
                                      "--units-per-mm",   numberText(row.unitsPerMm),
                                      "--json",           json.string()};
     if (quiet) args.push_back("--quiet");
@@ -208,8 +207,8 @@ void printTable(const std::vector<Result>& results) {
         char charts[32];
         std::snprintf(charts, sizeof charts, "%llux%llu^2", (unsigned long long)u64(j, "charts"),
                       (unsigned long long)u64(j, "grid"));
-        std::printf("%-*s %7llu %3u %8s %9llu %10.1f %10.1f %10.1f %11.2f %6.0fx %7.4f %7.3f%% %7.1f %8.0f\n", w,
-                    r.row.name.c_str(), (unsigned long long)u64(j, "samples"), r.row.level, charts,
+        std::printf("%-*s %7llu %3u %8s %9llu %10.1f %10.1f %10.1f %11.2f %6.0fx %7.5f %7.3f%% %7.1f %8.0f\n", w,
+                    r.row.name.c_str(), (unsigned long long)u64(j, "samples"), unsigned(u64(j, "subdivision_level")), charts,
                     (unsigned long long)u64(j, "render_vertices"), mib(double(u64(j, "raw_bytes"))),
                     mib(double(u64(j, "step1_bytes"))), mib(double(u64(j, "step2_bytes"))),
                     mib(double(u64(j, "sidecar_bytes"))), f64(j, "compression_ratio"), f64(j, "energy_kept"),
@@ -258,7 +257,9 @@ int runBakeBench(int argc, char** argv) {
     Options options;
     app.add_option("--mesh", options.meshes, "mesh to bake (repeatable); default: the bunny and Spot table");
     app.add_option("--samples", options.samples, "sample counts for --mesh (repeatable; default 16384)");
-    app.add_option("--level", options.level, "subdivision level for --mesh")->capture_default_str();
+    app.add_option("--level", options.level, "subdivision level for --mesh (0-6 or auto)")
+        ->check(CLI::IsMember({"auto", "0", "1", "2", "3", "4", "5", "6"}))
+        ->capture_default_str();
     app.add_option("--units-per-mm", options.unitsPerMm, "scene units per mm for --mesh")
         ->check(CLI::PositiveNumber)
         ->capture_default_str();
@@ -290,10 +291,10 @@ int runBakeBench(int argc, char** argv) {
                             row.name.c_str(), row.mesh.c_str());
                 continue;
             }
-            const std::string id = row.name + "_" + std::to_string(row.samples) + "_L" + std::to_string(row.level);
+            const std::string id = row.name + "_" + std::to_string(row.samples) + "_L" + row.level;
             const fs::path stem = options.outputDir / id, json = options.outputDir / (id + ".json");
-            std::printf("opal-bench bake: %s: %s, %llu samples, level %u, %s units/mm\n", id.c_str(),
-                        row.mesh.c_str(), (unsigned long long)row.samples, row.level,
+            std::printf("opal-bench bake: %s: %s, %llu samples, level %s, %s units/mm\n", id.c_str(),
+                        row.mesh.c_str(), (unsigned long long)row.samples, row.level.c_str(),
                         numberText(row.unitsPerMm).c_str());
             std::fflush(stdout);
             fs::remove(json);
