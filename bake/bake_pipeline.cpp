@@ -110,7 +110,7 @@ ProfileBasis fitBasis(const BakeOptions& options, const EditableRange& range, co
 
 std::string assetName(const std::string& input) {
     if (input == kBuiltinCandle) return "candle";
-    return std::filesystem::path(input).stem().string();
+    return assetNameFrom(std::filesystem::path(input).stem().string());
 }
 
 }  // namespace
@@ -210,6 +210,8 @@ void writeBakedAsset(const std::filesystem::path& stem, const TranslucentAsset& 
     std::filesystem::path usda = stem, sidecar = stem;
     usda += ".usda";
     sidecar += ".opal";
+    if (asset.name != assetNameFrom(asset.name))  // before anything is written
+        throw Error("asset name '" + asset.name + "' is not a prim name");
     writeSidecar(sidecar, asset);
     writeAssetLayer(usda, asset, sidecar.filename().string());
     if (report) {

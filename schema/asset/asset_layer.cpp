@@ -17,13 +17,6 @@ namespace {
 using usda::Value;
 namespace types = usda::types;
 
-std::string primName(const std::string& name) {
-    std::string out;
-    for (char c : name) out += std::isalnum(static_cast<unsigned char>(c)) || c == '_' ? c : '_';
-    if (out.empty() || std::isdigit(static_cast<unsigned char>(out[0]))) out = "_" + out;
-    return out;
-}
-
 usda::Vec3f toVec(const Imath::V3f& v) { return {v.x, v.y, v.z}; }
 usda::Vec3f toColor(const Rgb& c) { return {float(c[0]), float(c[1]), float(c[2])}; }
 
@@ -110,11 +103,21 @@ std::string where(const usda::Prim& prim) { return prim.location.str(); }
 
 }  // namespace
 
+std::string assetNameFrom(std::string_view text) {
+    std::string out;
+    for (char c : text) out += std::isalnum(static_cast<unsigned char>(c)) || c == '_' ? c : '_';
+    if (out.empty() || std::isdigit(static_cast<unsigned char>(out[0]))) out = "_" + out;
+    return out;
+}
+
 usda::Layer assetToLayer(const TranslucentAsset& asset, const std::string& sidecarAssetPath) {
     usda::Prim prim;
     prim.specifier = usda::Specifier::Def;
     prim.typeName = "Mesh";
-    prim.name = primName(asset.name);
+    if (asset.name != assetNameFrom(asset.name))
+        throw Error("asset name '" + asset.name + "' is not a prim name (it would be '" + assetNameFrom(asset.name) +
+                    "'; name assets with assetNameFrom)");
+    prim.name = asset.name;
     prim.apiSchemas.prepended = {std::string(kSubsurfaceApi)};
     prim.metadata.set("kind", Value::token("component"));
     usda::Dictionary custom;

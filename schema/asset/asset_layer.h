@@ -14,7 +14,14 @@ namespace opal {
 
 inline constexpr std::string_view kSubsurfaceApi = "OpalSubsurfaceAPI";
 
+// An asset's name is the name of its prim: `text` with every character that is not a
+// letter, digit or '_' replaced by '_', and '_' in front of a leading digit or an empty
+// name ("stanford-bunny" -> "stanford_bunny"). The bake names assets with it, so that the
+// sidecar, which records the name, and the layer agree.
+std::string assetNameFrom(std::string_view text);
+
 // `sidecarAssetPath` is written as given (relative to the layer, e.g. "./candle.opal").
+// Throws opal::Error unless asset.name is its own assetNameFrom().
 usda::Layer assetToLayer(const TranslucentAsset& asset, const std::string& sidecarAssetPath);
 
 // Writes the layer atomically.

@@ -116,6 +116,16 @@ TEST(OpalBakeCli, AValidTetrahedronBakes) {
     EXPECT_EQ(dir.list(), (std::vector<std::string>{"tetra.obj", "tetra.opal", "tetra.usda"}));
 }
 
+TEST(OpalBakeCli, AFileNameThatIsNoPrimNameGivesAReadableAsset) {
+    // The bunny's file is stanford-bunny_...: the asset is named for its prim, in both halves.
+    const ScratchDir dir;
+    test::writeText(dir / "3d-tetra.obj", std::string(kTetraVertices) + kTetraFaces);
+    const test::RunResult r =
+        bake(with({(dir / "3d-tetra.obj").string(), "-o", (dir / "3d-tetra").string(), "-q"}, kSmall));
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(readAsset(dir / "3d-tetra.usda").name, "_3d_tetra");
+}
+
 // ---- bad arguments ------------------------------------------------------------------
 
 TEST(OpalBakeCli, BadArgumentsNameTheProblem) {
