@@ -9,6 +9,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <atomic>
 #include <array>
 #include <cstring>
 #include <numbers>
@@ -196,18 +197,31 @@ void interpolateToVertices(const VertexWeights& weights, std::span<const float> 
         throw Error("vertex weights: inconsistent sizes (" + std::to_string(vertices) + " vertices, " +
                     std::to_string(weights.samples.size()) + " entries, " + std::to_string(out.size()) +
                     " output values)");
+    // The samples' RGB padded to four lanes: one aligned load per weight. The gathers are
+    // what this costs (1.1 million at 65,536 samples and 139,330 vertices), not the sums.
     const std::size_t samples = perSample.size() / 3;
+    std::vector<Float4> padded(samples);
+    for (std::size_t i = 0; i < samples; ++i)
+        padded[i] = Float4{perSample[3 * i], perSample[3 * i + 1], perSample[3 * i + 2], 0.0f};
+    std::atomic<bool> outOfRange = false;
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, vertices, 4096), [&](const tbb::blocked_range<std::size_t>& r) {
+        const std::uint32_t* sample = weights.samples.data();
+        const float* weight = weights.weights.data();
+        bool bad = false;
         for (std::size_t v = r.begin(); v != r.end(); ++v) {
-            float sum[3] = {0.0f, 0.0f, 0.0f};
+            Float4 sum = {};
             for (std::uint32_t e = weights.offsets[v]; e < weights.offsets[v + 1]; ++e) {
-                const std::uint32_t s = weights.samples[e];
-                if (s >= samples) throw Error("vertex weights: sample " + std::to_string(s) + " out of range");
-                for (int c = 0; c < 3; ++c) sum[c] += weights.weights[e] * perSample[3 * std::size_t(s) + c];
+                const std::uint32_t s = sample[e];
+                bad |= s >= samples;
+                sum += weight[e] * padded[s < samples ? s : 0];
             }
-            std::copy_n(sum, 3, out.data() + 3 * v);
+            out[3 * v] = sum[0];
+            out[3 * v + 1] = sum[1];
+            out[3 * v + 2] = sum[2];
         }
+        if (bad) outOfRange = true;
     });
+    if (outOfRange) throw Error("vertex weights: a sample index is not below the " + std::to_string(samples) + " samples");
 }
 
 }  // namespace opal

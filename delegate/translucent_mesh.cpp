@@ -169,7 +169,10 @@ void TranslucentMesh::updateMaterial(const BoundMaterial& material, CommitStats&
 void TranslucentMesh::updateRadiance(bool reference, int primId, CommitStats& stats) {
     const OutputKey key{reference, momentsVersion_, materialVersion_, primId};
     if (shading_ && key == output_) return;
-    auto shading = std::make_shared<MeshShading>();
+    // The previous shading's buffers are reused when no frame holds it any more: a material
+    // edit then allocates nothing (fresh megabytes cost page faults on every edit).
+    std::shared_ptr<MeshShading> shading =
+        shading_ && shading_.use_count() == 1 ? std::move(shading_) : std::make_shared<MeshShading>();
     shading->asset = desc_.asset;
     shading->normalToWorld = Imath::M33f(rotationOf(desc_.transform, "transform"));
     shading->specular = material_.specular;
@@ -187,8 +190,12 @@ void TranslucentMesh::updateRadiance(bool reference, int primId, CommitStats& st
         const Stopwatch clock;
         const std::span<const float> radiance = engine_->vertexRadiance();
         shading->vertexRadiance.assign(radiance.begin(), radiance.end());
-        shading->vertexIrradiance = toVertices(weights, engine_->sampleIrradiance());
         shading->eta = engine_->material().eta;
+        const IrradianceKey irradianceKey{false, momentsVersion_, shading->eta};
+        if (!vertexIrradiance_ || irradianceKey != irradianceKey_) {
+            vertexIrradiance_ = std::make_shared<const std::vector<float>>(toVertices(weights, engine_->sampleIrradiance()));
+            irradianceKey_ = irradianceKey;
+        }
         stats.materialMs += clock.ms();
     } else {
         // Ground truth: the same lights' exact E (F_t(eta, .) per light, not its moment
@@ -203,11 +210,13 @@ void TranslucentMesh::updateRadiance(bool reference, int primId, CommitStats& st
             fail(e.what());
         }
         shading->vertexRadiance = toVertices(weights, gathered);
-        shading->vertexIrradiance = toVertices(weights, exact);
+        vertexIrradiance_ = std::make_shared<const std::vector<float>>(toVertices(weights, exact));
+        irradianceKey_ = {true, momentsVersion_, m.eta};
         shading->eta = m.eta;
         ++stats.referenceGathers;
         stats.referenceMs += clock.ms();
     }
+    shading->vertexIrradiance = vertexIrradiance_;
     shading_ = std::move(shading);
     output_ = key;
 }
@@ -220,6 +229,7 @@ void TranslucentMesh::hide() {
         engineHasMaterial_ = false;
     }
     shading_.reset();
+    vertexIrradiance_.reset();
     relightInFull_ = true;
 }
 

@@ -99,7 +99,16 @@ private:
         bool operator==(const OutputKey&) const = default;
     };
     OutputKey output_;
-    std::shared_ptr<const MeshShading> shading_;
+    std::shared_ptr<MeshShading> shading_;  // published as const; reused when no frame holds it
+    // E per vertex and what it was formed from (moments version, eta, reference or not).
+    std::shared_ptr<const std::vector<float>> vertexIrradiance_;
+    struct IrradianceKey {
+        bool reference = false;
+        std::uint64_t moments = 0;
+        double eta = 0.0;
+        bool operator==(const IrradianceKey&) const = default;
+    };
+    IrradianceKey irradianceKey_;
 };
 
 }  // namespace opal
