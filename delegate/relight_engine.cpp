@@ -31,55 +31,6 @@ inline Float4 load4(const float* p) {
     return v;
 }
 
-// y[r] = sum_e A[r, col_e] x[col_e] for one row r, over the first C of the 4L lanes of each
-// entry of x. x is padded to 4L lanes (the rest zero), so that one pass over the matrix
-// serves every moment m and RGB channel with whole-register operations. Even and odd
-// entries go to separate accumulators to halve the multiply-add dependency chain.
-template <std::size_t L>
-void productRow(const SparseMatrix& a, std::uint32_t r, const float* x, float* y, std::size_t C) {
-    Float4 even[L] = {}, odd[L] = {};
-    const std::uint32_t* column = a.columns.data();
-    const float* value = a.values.data();
-    std::uint64_t e = a.rowOffsets[r];
-    const std::uint64_t stop = a.rowOffsets[r + 1];
-    for (; e + 2 <= stop; e += 2) {
-        const float* x0 = x + std::size_t(column[e]) * 4 * L;
-        const float* x1 = x + std::size_t(column[e + 1]) * 4 * L;
-        for (std::size_t l = 0; l < L; ++l) {
-            even[l] += value[e] * load4(x0 + 4 * l);
-            odd[l] += value[e + 1] * load4(x1 + 4 * l);
-        }
-    }
-    if (e < stop) {
-        const float* x0 = x + std::size_t(column[e]) * 4 * L;
-        for (std::size_t l = 0; l < L; ++l) even[l] += value[e] * load4(x0 + 4 * l);
-    }
-    float sum[4 * L];
-    for (std::size_t l = 0; l < L; ++l) {
-        const Float4 total = even[l] + odd[l];
-        std::memcpy(sum + 4 * l, &total, sizeof total);
-    }
-    std::copy_n(sum, C, y);
-}
-
-// Rows [begin, end) of every matrix: y[(r * K + k) * C + c], all k of a row side by side.
-template <std::size_t L>
-void productRows(std::span<const SparseMatrix> matrices, const float* x, float* y, std::size_t C,
-                 std::uint32_t begin, std::uint32_t end) {
-    const std::size_t K = matrices.size();
-    for (std::size_t k = 0; k < K; ++k)
-        for (std::uint32_t r = begin; r < end; ++r) productRow<L>(matrices[k], r, x, y + (r * K + k) * C, C);
-}
-
-void productRows(std::size_t W, std::span<const SparseMatrix> matrices, const float* x, float* y, std::size_t C,
-                 std::uint32_t begin, std::uint32_t end) {
-    switch (W) {
-        case 4: productRows<1>(matrices, x, y, C, begin, end); break;
-        case 8: productRows<2>(matrices, x, y, C, begin, end); break;
-        default: productRows<3>(matrices, x, y, C, begin, end); break;
-    }
-}
-
 void checkAsset(const TranslucentAsset& asset) {
     const std::size_t n = asset.layout.cells();
     const auto fail = [&](const std::string& what) {
@@ -96,11 +47,17 @@ void checkAsset(const TranslucentAsset& asset) {
                  std::to_string(n) + " x " + std::to_string(n));
 }
 
+// The asset's transfer, after checkAsset: what the product copy is built from.
+TransferProduct checkedTransfer(const std::shared_ptr<const TranslucentAsset>& asset) {
+    if (!asset) throw Error("relight engine: no asset");
+    checkAsset(*asset);
+    return TransferProduct(asset->transfer, asset->samples.size());
+}
+
 }  // namespace
 
-RelightEngine::RelightEngine(std::shared_ptr<const TranslucentAsset> asset) : asset_(std::move(asset)) {
-    if (!asset_) throw Error("relight engine: no asset");
-    checkAsset(*asset_);
+RelightEngine::RelightEngine(std::shared_ptr<const TranslucentAsset> asset)
+    : asset_(std::move(asset)), product_(checkedTransfer(asset_)) {
     samples_ = asset_->samples.size();
     K_ = asset_->transfer.perBasis.size();
     paddedK_ = (K_ + 3) / 4 * 4;
@@ -124,10 +81,9 @@ void RelightEngine::setIrradiance(const IrradianceMoments& irradiance) {
 
     // y_{k,m} = (w1 T_k w0^-1) wE_m, one task per block of rows of every matrix.
     products_.resize(samples_ * K_ * C);
-    const std::span<const SparseMatrix> matrices(asset_->transfer.perBasis);
     tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, std::uint32_t(samples_), kRowsPerTask),
                       [&](const tbb::blocked_range<std::uint32_t>& rows) {
-                          productRows(W, matrices, haar_.data(), products_.data(), C, rows.begin(), rows.end());
+                          product_.multiplyRows(haar_.data(), W, products_.data(), C, rows.begin(), rows.end());
                       });
     moments_ = irradiance;
     fresnel_ = fresnelMoments(material_.eta, int(moments_.terms));

@@ -2,8 +2,8 @@
 // s.5), with the Fresnel moments of s.6.
 //
 //   setIrradiance:  wE_m = w0 E_m                     Haar per chart, every m and RGB
-//                   y_{k,m} = (w1 T_k w0^-1) wE_m      one pass over each sparse matrix,
-//                                                      all m x RGB channels at once
+//                   y_{k,m} = (w1 T_k w0^-1) wE_m      one pass over each sparse matrix
+//                                                      (TransferProduct), all m x RGB at once
 //   setMaterial:    s_k(sigma, eta) per channel (ProfileBasis::project), c_m(eta)
 //                   z_k = sum_m c_m y_{k,m}            only when eta changes
 //                   L = w1^-1 ((1/pi) sum_k s_k z_k)   CDF 9/7 inverse per chart
@@ -16,6 +16,7 @@
 #pragma once
 
 #include "delegate/irradiance.h"
+#include "delegate/transfer_product.h"
 #include "schema/asset/translucent_asset.h"
 
 #include <memory>
@@ -51,6 +52,7 @@ private:
     void weighProducts(bool reweigh, std::size_t begin, std::size_t end);
 
     std::shared_ptr<const TranslucentAsset> asset_;
+    TransferProduct product_;        // the transfer, compact for y_k (transfer_product.h)
     std::size_t samples_ = 0;
     std::size_t K_ = 0;
     std::size_t paddedK_ = 0;        // K rounded up to a multiple of 4

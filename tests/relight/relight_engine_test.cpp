@@ -32,6 +32,10 @@ std::shared_ptr<TranslucentAsset> slabAsset(double keepFraction = 1.0, double en
 }
 
 // L = (1/pi) sum_k s_k T_k E with the dense T_k and E = sum_m c_m E_m: the direct evaluation.
+// The engine multiplies with binary16 transfer values (transfer_product.h, relative rounding
+// <= 2^-11 per entry), so it matches this to kHalfProduct rather than float precision.
+constexpr double kHalfProduct = 1e-3;
+
 std::vector<float> directRadiance(const TranslucentAsset& asset, const Material& material,
                                   const IrradianceMoments& moments) {
     const std::size_t n = asset.samples.size();
@@ -56,7 +60,7 @@ TEST(RelightEngine, LosslessTransferMatchesTheDenseProduct) {
         RelightEngine engine(asset);
         engine.setIrradiance(moments);
         EXPECT_LT(test::maxRelative(engine.sampleRadiance(), directRadiance(*asset, asset->defaultMaterial, moments)),
-                  1e-5)
+                  kHalfProduct)
             << terms << " terms";
         EXPECT_LT(test::maxRelative(engine.sampleIrradiance(),
                                     moments.combine(fresnelMoments(asset->defaultMaterial.eta, int(terms)))),
@@ -81,7 +85,7 @@ TEST(RelightEngine, MaterialEditsEqualAFullRecompute) {
         fresh.setMaterial(m);
         fresh.setIrradiance(moments);
         EXPECT_LT(test::maxRelative(edited.sampleRadiance(), fresh.sampleRadiance()), 1e-5);
-        EXPECT_LT(test::maxRelative(edited.sampleRadiance(), directRadiance(*asset, m, moments)), 1e-5);
+        EXPECT_LT(test::maxRelative(edited.sampleRadiance(), directRadiance(*asset, m, moments)), kHalfProduct);
         EXPECT_LT(test::maxRelative(edited.vertexRadiance(), fresh.vertexRadiance()), 1e-5);
     }
 }

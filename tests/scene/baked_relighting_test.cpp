@@ -229,8 +229,10 @@ void expectWithinOnePercent(const Shape& shape) {
 TEST(BakedRelighting, SphereMatchesTheExactGatherWithinOnePercent) { expectWithinOnePercent(sphere()); }
 TEST(BakedRelighting, TorusMatchesTheExactGatherWithinOnePercent) { expectWithinOnePercent(torus()); }
 
-// The engine on a lossless bake (keep 1, energy 1) is the direct sum above up to float
-// rounding, so the "basis alone" numbers are the lossless bake's. 512 samples (2 charts
+// The engine on a lossless bake (keep 1, energy 1) is the direct sum above up to the
+// binary16 rounding of its working transfer (delegate/transfer_product.h: 2^-11 per entry,
+// measured 5e-4 to 8e-4 relative RMSE after the Haar domain's cancellations), so the
+// "basis alone" numbers are the lossless bake's. 512 samples (2 charts
 // of 16 x 16) keep the dense bake cheap.
 TEST(BakedRelighting, LosslessBakeLeavesOnlyTheBasisError) {
     for (const Shape& shape : {sphere(), torus()}) {
@@ -244,7 +246,7 @@ TEST(BakedRelighting, LosslessBakeLeavesOnlyTheBasisError) {
                 relativeRmse(engine.sampleRadiance(), referenceGather(*asset, engine.material(), e));
             std::printf("[ lossless ] %s %s (512 samples): vs the direct sum %.1e, vs the reference %.3f%%\n",
                         shape.name, name(light), vsSum, 100.0 * vsReference);
-            EXPECT_LE(vsSum, 1e-4) << shape.name << ' ' << name(light);
+            EXPECT_LE(vsSum, 2e-3) << shape.name << ' ' << name(light);
             EXPECT_LE(vsReference, 0.005) << shape.name << ' ' << name(light);
         }
     }

@@ -1,0 +1,160 @@
+// TransferProduct: the compact working copy of the transfer against the asset's floats.
+#include "delegate/transfer_product.h"
+
+#include "schema/error.h"
+
+#include <Imath/half.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <vector>
+
+namespace opal {
+namespace {
+
+// A random sparse samples x samples matrix with `perRow` distinct ascending columns per row
+// and values spread over `decades` powers of ten.
+SparseMatrix randomMatrix(std::uint32_t samples, std::uint32_t perRow, double decades, std::uint32_t seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    SparseMatrix m;
+    m.rows = m.cols = samples;
+    m.rowOffsets.push_back(0);
+    for (std::uint32_t r = 0; r < samples; ++r) {
+        const std::uint32_t stride = samples / perRow;
+        for (std::uint32_t j = 0; j < perRow; ++j) {
+            m.columns.push_back(j * stride + std::uint32_t(unit(rng) * (stride - 1)));
+            const double sign = unit(rng) < 0.5 ? -1.0 : 1.0;
+            m.values.push_back(float(sign * std::pow(10.0, -decades * unit(rng))));
+        }
+        m.rowOffsets.push_back(m.values.size());
+    }
+    return m;
+}
+
+struct Product {
+    std::vector<float> y;      // (r * K + k) * C + c
+    std::vector<double> bound; // sum |a| |x| per output: the scale of the allowed rounding
+};
+
+// The exact product in double from the asset's floats.
+Product exactProduct(const CompressedTransfer& t, const std::vector<float>& x, std::size_t lanes, std::size_t C) {
+    const std::size_t K = t.perBasis.size(), N = t.perBasis[0].rows;
+    Product p{std::vector<float>(N * K * C), std::vector<double>(N * K * C)};
+    for (std::size_t k = 0; k < K; ++k)
+        for (std::size_t r = 0; r < N; ++r)
+            for (std::size_t c = 0; c < C; ++c) {
+                double sum = 0.0, bound = 0.0;
+                const SparseMatrix& m = t.perBasis[k];
+                for (std::uint64_t e = m.rowOffsets[r]; e < m.rowOffsets[r + 1]; ++e) {
+                    const double a = m.values[e], v = x[m.columns[e] * lanes + c];
+                    sum += a * v;
+                    bound += std::abs(a * v);
+                }
+                p.y[(r * K + k) * C + c] = float(sum);
+                p.bound[(r * K + k) * C + c] = bound;
+            }
+    return p;
+}
+
+std::vector<float> paddedInput(std::size_t samples, std::size_t lanes, std::size_t C, std::uint32_t seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> value(-1.0f, 1.0f);
+    std::vector<float> x(samples * lanes, 0.0f);
+    for (std::size_t j = 0; j < samples; ++j)
+        for (std::size_t c = 0; c < C; ++c) x[j * lanes + c] = value(rng);
+    return x;
+}
+
+// Every output within 2^-11 sum |a||x| (binary16's relative rounding) plus float sums.
+void expectProductMatches(const CompressedTransfer& t, std::size_t lanes, std::size_t C) {
+    const std::size_t N = t.perBasis[0].rows, K = t.perBasis.size();
+    const TransferProduct product(t, N);
+    const std::vector<float> x = paddedInput(N, lanes, C, 7);
+    std::vector<float> y(N * K * C, -1.0f);
+    product.multiplyRows(x.data(), lanes, y.data(), C, 0, std::uint32_t(N));
+    const Product exact = exactProduct(t, x, lanes, C);
+    for (std::size_t i = 0; i < y.size(); ++i)
+        ASSERT_NEAR(y[i], exact.y[i], std::ldexp(1.0, -11) * exact.bound[i] + 1e-6 * exact.bound[i]) << "output " << i;
+}
+
+CompressedTransfer randomTransfer(std::uint32_t samples, std::size_t K) {
+    CompressedTransfer t;
+    for (std::size_t k = 0; k < K; ++k) t.perBasis.push_back(randomMatrix(samples, 16, 3.0, std::uint32_t(11 + k)));
+    return t;
+}
+
+TEST(NormalHalfToFloat, EqualsImathForEveryNormalHalf) {
+    for (std::uint32_t bits = 0; bits < 0x10000u; ++bits) {
+        const std::uint32_t exponent = (bits >> 10) & 0x1fu;
+        if (exponent == 0 || exponent == 31) continue;  // zero/subnormal and inf/NaN are never stored
+        Imath::half h;
+        h.setBits(std::uint16_t(bits));
+        ASSERT_EQ(normalHalfToFloat(std::uint16_t(bits)), float(h)) << "bits " << bits;
+    }
+}
+
+TEST(TransferProduct, MatchesTheExactProductForEveryLaneWidth) {
+    const CompressedTransfer t = randomTransfer(256, 3);
+    expectProductMatches(t, 4, 3);
+    expectProductMatches(t, 8, 6);
+    expectProductMatches(t, 12, 9);
+}
+
+TEST(TransferProduct, WideColumnsBeyond65536Samples) {
+    // 70,000 samples need 32-bit columns; 2 entries per row keep the test fast.
+    CompressedTransfer t;
+    t.perBasis.push_back(randomMatrix(70000, 2, 2.0, 3));
+    const TransferProduct product(t, 70000);
+    std::uint64_t e = 0;
+    for (std::uint32_t r = 0; r < 70000; ++r)
+        for (std::uint64_t i = t.perBasis[0].rowOffsets[r]; i < t.perBasis[0].rowOffsets[r + 1]; ++i, ++e)
+            ASSERT_EQ(product.column(0, e), t.perBasis[0].columns[i]);
+    EXPECT_GT(*std::max_element(t.perBasis[0].columns.begin(), t.perBasis[0].columns.end()), 65536u);
+    expectProductMatches(t, 4, 3);
+}
+
+TEST(TransferProduct, ValuesKeepElevenSignificantBitsAndDropOnlyTheNegligible) {
+    CompressedTransfer t;
+    SparseMatrix m = randomMatrix(64, 8, 12.0, 5);  // 12 decades: some fall below 2^-28 of the largest
+    t.perBasis.push_back(m);
+    const TransferProduct product(t, 64);
+    float largest = 0.0f;
+    for (float v : m.values) largest = std::max(largest, std::abs(v));
+    std::uint64_t kept = 0, dropped = 0;
+    for (std::uint32_t r = 0; r < 64; ++r) {
+        std::uint64_t e = product.rowBegin(0, r);
+        for (std::uint64_t i = m.rowOffsets[r]; i < m.rowOffsets[r + 1]; ++i) {
+            if (e < product.rowBegin(0, r + 1) && product.column(0, e) == m.columns[i]) {
+                EXPECT_NEAR(product.value(0, e), m.values[i], std::ldexp(std::abs(m.values[i]), -11));
+                ++e, ++kept;
+            } else {
+                EXPECT_LT(std::abs(m.values[i]), std::ldexp(largest, -28)) << "row " << r << " entry " << i;
+                ++dropped;
+            }
+        }
+        EXPECT_EQ(e, product.rowBegin(0, r + 1));
+    }
+    EXPECT_GT(dropped, 0u);
+    EXPECT_EQ(kept, product.nonZeros());
+}
+
+TEST(TransferProduct, RejectsInconsistentMatrices) {
+    CompressedTransfer t = randomTransfer(32, 1);
+    EXPECT_THROW(TransferProduct(t, 64), Error);  // shape
+    t.perBasis[0].columns[5] = 32;
+    EXPECT_THROW(TransferProduct(t, 32), Error);  // column out of range
+    t = randomTransfer(32, 1);
+    t.perBasis[0].values[3] = std::nanf("");
+    EXPECT_THROW(TransferProduct(t, 32), Error);
+    t = randomTransfer(32, 1);
+    const TransferProduct product(t, 32);
+    std::vector<float> x(32 * 6), y(32 * 6);
+    EXPECT_THROW(product.multiplyRows(x.data(), 6, y.data(), 3, 0, 32), Error);  // lanes
+}
+
+}  // namespace
+}  // namespace opal
