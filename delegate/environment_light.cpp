@@ -16,7 +16,7 @@ namespace opal {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-constexpr int kSupersamples = 4;  // per axis and cube-map texel
+constexpr int kSupersamples = 2;  // per axis and cube-map texel
 
 }  // namespace
 
@@ -132,33 +132,6 @@ std::vector<float> EnvironmentLight::haarRadiance(const CubeMapLayout& cube, con
     std::vector<float> radiance = cubeRadiance(cube, objectToWorld);
     haarForwardCharts(std::span<float>(radiance), cube.charts(), 3);
     return radiance;
-}
-
-void addEnvironmentIrradiance(const EnvironmentTransfer& transfer, std::span<const float> haarRadiance,
-                              IrradianceMoments& moments) {
-    const std::size_t rows = std::size_t(moments.samples) * moments.terms;
-    const std::size_t texels = 6 * std::size_t(transfer.cubeFaceSize) * transfer.cubeFaceSize;
-    if (transfer.fresnelTerms != moments.terms || transfer.offsets.size() != rows + 1)
-        throw Error("dome light: the environment transfer has " + std::to_string(transfer.offsets.size()) +
-                    " row offsets and " + std::to_string(transfer.fresnelTerms) + " Fresnel terms, expected " +
-                    std::to_string(rows + 1) + " and " + std::to_string(moments.terms));
-    if (haarRadiance.size() != texels * 3)
-        throw Error("dome light: " + std::to_string(haarRadiance.size()) + " radiance values for " +
-                    std::to_string(texels) + " RGB texels");
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, rows, 1024), [&](const auto& range) {
-        for (std::size_t r = range.begin(); r != range.end(); ++r) {
-            float sum[3] = {0.0f, 0.0f, 0.0f};  // <T_{i,m}, L> per channel
-            for (std::uint32_t e = transfer.offsets[r]; e < transfer.offsets[r + 1]; ++e) {
-                const float* l = haarRadiance.data() + std::size_t(transfer.indices[e]) * 3;
-                const float t = transfer.values[e];
-                sum[0] += t * l[0];
-                sum[1] += t * l[1];
-                sum[2] += t * l[2];
-            }
-            float* out = moments.values.data() + r * 3;  // row r = sample * terms + m
-            for (int c = 0; c < 3; ++c) out[c] += sum[c];
-        }
-    });
 }
 
 }  // namespace opal

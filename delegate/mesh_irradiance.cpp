@@ -39,7 +39,7 @@ MeshIrradiance::MeshIrradiance(std::shared_ptr<const TranslucentAsset> asset, co
       placed_(placeSamples(asset_->samples, objectToWorld)),
       total_(std::uint32_t(asset_->samples.size()), terms_) {}
 
-void MeshIrradiance::compute(Contribution& c, const RayScene* scene) const {
+void MeshIrradiance::compute(Contribution& c, const RayScene* scene) {
     c.moments = IrradianceMoments(std::uint32_t(placed_.positions.size()), terms_);
     if (const auto* light = std::get_if<AnalyticLight>(&c.source)) {
         const float offset = scene ? kShadowOffset * scene->extent() : 0.0f;
@@ -50,8 +50,9 @@ void MeshIrradiance::compute(Contribution& c, const RayScene* scene) const {
     const auto& dome = std::get<std::shared_ptr<const EnvironmentLight>>(c.source);
     if (asset_->environment.offsets.empty())
         throw Error("irradiance: asset '" + asset_->name + "' has no environment transfer for a dome light");
+    if (!environment_) environment_ = std::make_unique<const EnvironmentVectors>(asset_->environment, asset_->samples.size());
     const CubeMapLayout cube(asset_->environment.cubeFaceSize);
-    addEnvironmentIrradiance(asset_->environment, dome->haarRadiance(cube, objectToWorld_), c.moments);
+    environment_->addIrradiance(dome->haarRadiance(cube, objectToWorld_), c.moments);
 }
 
 void MeshIrradiance::resum() {

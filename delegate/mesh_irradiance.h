@@ -9,6 +9,7 @@
 
 #include "delegate/analytic_light.h"
 #include "delegate/environment_light.h"
+#include "delegate/environment_vectors.h"
 #include "delegate/fresnel_response.h"
 #include "delegate/hd/types.h"
 #include "delegate/irradiance.h"
@@ -51,7 +52,7 @@ private:
         IrradianceMoments moments;
         std::vector<LightArrival> arrivals;  // analytic lights: for exactIrradiance
     };
-    void compute(Contribution& contribution, const RayScene* scene) const;
+    void compute(Contribution& contribution, const RayScene* scene);
     void resum();
 
     std::shared_ptr<const TranslucentAsset> asset_;
@@ -59,6 +60,7 @@ private:
     std::uint32_t terms_ = 0;
     FresnelResponse response_;
     PlacedSamples placed_;
+    std::unique_ptr<const EnvironmentVectors> environment_;  // built with the first dome
     std::map<hd::SdfPath, Contribution> lights_;
     IrradianceMoments total_;
 };

@@ -1,5 +1,6 @@
 #include "delegate/relight_engine.h"
 
+#include "delegate/float4.h"
 #include "schema/error.h"
 #include "schema/scatter/fresnel_moments.h"
 #include "schema/wavelet/cdf97.h"
@@ -21,15 +22,6 @@ namespace {
 
 constexpr std::uint32_t kRowsPerTask = 256;
 
-// Four floats in one SSE register (GCC/Clang vector extension): the compilers keep these
-// in registers, where plain float arrays of the same loops were vectorized poorly (3x slower).
-using Float4 = float __attribute__((vector_size(16)));
-
-inline Float4 load4(const float* p) {
-    Float4 v;
-    std::memcpy(&v, p, sizeof v);
-    return v;
-}
 
 void checkAsset(const TranslucentAsset& asset) {
     const std::size_t n = asset.layout.cells();

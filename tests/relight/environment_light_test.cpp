@@ -1,4 +1,5 @@
 #include "delegate/environment_light.h"
+#include "delegate/environment_vectors.h"
 
 #include "delegate/mesh_irradiance.h"
 #include "schema/error.h"
@@ -146,13 +147,60 @@ TEST(EnvironmentLight, DomeRotationEqualsShiftedMap) {
     EXPECT_LT(test::maxRelative(moments(pixels, scaled * rotationY(90)), shiftedMap), 1e-5);
 }
 
+// The per-sample union layout against the plain sum over the sidecar's rows, with rows of
+// one sample that keep different positions (which the bake never writes, but a file may).
+// Face size 128 has 98,304 texels: 32-bit positions.
+void expectSumOverStoredRows(std::uint32_t faceSize, std::uint32_t density, std::uint32_t terms) {
+    const std::uint32_t samples = 50, texels = 6 * faceSize * faceSize;
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<float> value(-1.0f, 1.0f);
+    EnvironmentTransfer t;
+    t.cubeFaceSize = faceSize;
+    t.fresnelTerms = terms;
+    t.offsets.push_back(0);
+    for (std::uint32_t r = 0; r < samples * terms; ++r) {
+        for (std::uint32_t j = 0; j < texels; ++j)
+            if (rng() % density == 0) t.indices.push_back(j), t.values.push_back(value(rng));
+        t.offsets.push_back(std::uint32_t(t.indices.size()));
+    }
+    std::vector<float> radiance(texels * 3);
+    for (float& l : radiance) l = value(rng);
+    for (bool avx2 : {false, true}) {
+        IrradianceMoments moments(samples, terms);
+        moments.values.assign(moments.values.size(), 0.5f);  // addIrradiance adds
+        const EnvironmentVectors vectors(t, samples, avx2);
+        if (avx2 && !vectors.usesAvx2()) continue;  // this CPU has only the portable loop
+        vectors.addIrradiance(radiance, moments);
+        for (std::uint32_t r = 0; r < samples * terms; ++r)
+            for (int c = 0; c < 3; ++c) {
+                double sum = 0.5, bound = 0.0;  // binary16 values: 2^-11 of each term
+                for (std::uint32_t e = t.offsets[r]; e < t.offsets[r + 1]; ++e) {
+                    sum += double(t.values[e]) * radiance[t.indices[e] * 3 + c];
+                    bound += std::abs(double(t.values[e]) * radiance[t.indices[e] * 3 + c]);
+                }
+                ASSERT_NEAR(moments.values[r * 3 + c], sum, std::ldexp(bound, -11) + 1e-6)
+                    << "row " << r << " channel " << c << (avx2 ? " (avx2)" : "");
+            }
+    }
+}
+
+TEST(EnvironmentVectors, EqualTheSumOverTheStoredRows) {
+    for (std::uint32_t terms : {1u, 2u, 3u}) expectSumOverStoredRows(4, 4, terms);
+    expectSumOverStoredRows(128, 256, 2);
+}
+
 TEST(EnvironmentLight, RejectsMismatchedTransfer) {
     const auto asset = hemisphereAsset(4, 2);
     IrradianceMoments wrongTerms(std::uint32_t(asset->samples.size()), 1);
     const std::vector<float> radiance(6 * 4 * 4 * 3, 1.0f);
-    EXPECT_THROW(addEnvironmentIrradiance(asset->environment, radiance, wrongTerms), Error);
+    const EnvironmentVectors vectors(asset->environment, asset->samples.size());
+    EXPECT_THROW(vectors.addIrradiance(radiance, wrongTerms), Error);
     IrradianceMoments moments(std::uint32_t(asset->samples.size()), 2);
-    EXPECT_THROW(addEnvironmentIrradiance(asset->environment, std::span(radiance).first(30), moments), Error);
+    EXPECT_THROW(vectors.addIrradiance(std::span(radiance).first(30), moments), Error);
+    EXPECT_THROW(EnvironmentVectors(asset->environment, asset->samples.size() + 1), Error);
+    EnvironmentTransfer outside = asset->environment;
+    outside.indices[3] = 6 * 4 * 4;
+    EXPECT_THROW(EnvironmentVectors(outside, asset->samples.size()), Error);
 }
 
 }  // namespace

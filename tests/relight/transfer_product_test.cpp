@@ -70,15 +70,27 @@ std::vector<float> paddedInput(std::size_t samples, std::size_t lanes, std::size
 }
 
 // Every output within 2^-11 sum |a||x| (binary16's relative rounding) plus float sums.
-void expectProductMatches(const CompressedTransfer& t, std::size_t lanes, std::size_t C) {
+void expectProductMatches(const CompressedTransfer& t, std::size_t lanes, std::size_t C, TransferProduct::Kernel kernel) {
     const std::size_t N = t.perBasis[0].rows, K = t.perBasis.size();
-    const TransferProduct product(t, N);
+    const TransferProduct product(t, N, kernel);
+    ASSERT_EQ(product.kernel(), kernel);
     const std::vector<float> x = paddedInput(N, lanes, C, 7);
     std::vector<float> y(N * K * C, -1.0f);
     product.multiplyRows(x.data(), lanes, y.data(), C, 0, std::uint32_t(N));
     const Product exact = exactProduct(t, x, lanes, C);
     for (std::size_t i = 0; i < y.size(); ++i)
         ASSERT_NEAR(y[i], exact.y[i], std::ldexp(1.0, -11) * exact.bound[i] + 1e-6 * exact.bound[i]) << "output " << i;
+}
+
+// Each kernel this CPU has (the portable one always).
+std::vector<TransferProduct::Kernel> kernels() {
+    std::vector<TransferProduct::Kernel> all{TransferProduct::Kernel::Portable};
+    if (TransferProduct::kernelAvailable(TransferProduct::Kernel::Avx2)) all.push_back(TransferProduct::Kernel::Avx2);
+    return all;
+}
+
+void expectProductMatches(const CompressedTransfer& t, std::size_t lanes, std::size_t C) {
+    for (TransferProduct::Kernel kernel : kernels()) expectProductMatches(t, lanes, C, kernel);
 }
 
 CompressedTransfer randomTransfer(std::uint32_t samples, std::size_t K) {
@@ -140,6 +152,13 @@ TEST(TransferProduct, ValuesKeepElevenSignificantBitsAndDropOnlyTheNegligible) {
     }
     EXPECT_GT(dropped, 0u);
     EXPECT_EQ(kept, product.nonZeros());
+}
+
+TEST(TransferProduct, BestIsTheFastestKernelTheCpuHas) {
+    const CompressedTransfer t = randomTransfer(32, 1);
+    EXPECT_EQ(TransferProduct(t, 32).kernel(), kernels().back());
+    if (!TransferProduct::kernelAvailable(TransferProduct::Kernel::Avx2))
+        EXPECT_THROW(TransferProduct(t, 32, TransferProduct::Kernel::Avx2), Error);
 }
 
 TEST(TransferProduct, RejectsInconsistentMatrices) {
