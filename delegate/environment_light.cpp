@@ -61,30 +61,40 @@ Imath::V2d LatLongMap::coordinates(const Imath::V3d& d) {
     return {0.5 * (1.0 - phi / kPi), 0.5 - theta / kPi};
 }
 
-// Bilinear between pixel centres; wraps around in longitude, clamps at the poles.
-Imath::V3f LatLongMap::bilinear(const Level& level, double u, double v) const {
-    const double x = (u - std::floor(u)) * level.width - 0.5, y = v * level.height - 0.5;
-    const double x0 = std::floor(x), y0 = std::floor(y);
-    const float fx = float(x - x0), fy = float(y - y0);
-    const auto column = [&](double c) {  // u in [0, 1] puts c in [-1, width]: wrap once
-        const int i = int(c);
-        return i < 0 ? i + level.width : (i >= level.width ? i - level.width : i);
-    };
-    const auto row = [&](double r) { return std::clamp(int(r), 0, level.height - 1); };
-    const int xa = column(x0), xb = column(x0 + 1), ya = row(y0), yb = row(y0 + 1);
-    const auto at = [&](int px, int py) {
-        const float* p = level.rgb.data() + (std::size_t(py) * level.width + px) * 3;
-        return Imath::V3f(p[0], p[1], p[2]);
-    };
-    return (at(xa, ya) * (1.0f - fx) + at(xb, ya) * fx) * (1.0f - fy) + (at(xa, yb) * (1.0f - fx) + at(xb, yb) * fx) * fy;
+// Bilinear between pixel centres; wraps around in longitude, clamps at the poles. Float
+// arithmetic (u in [0, 1] resolves 2^-24 of a row, far below a pixel of any map), and
+// floor(t) as int(t + 1) - 1, exact for t > -1, which u and v in [0, 1] guarantee: the
+// baseline x86-64 build has no rounding instruction, and std::floor was a third of a
+// lookup.
+Imath::V3f LatLongMap::bilinear(const Level& level, float u, float v) {
+    u = std::clamp(u, 0.0f, 1.0f), v = std::clamp(v, 0.0f, 1.0f);
+    const float x = u * float(level.width) + 0.5f, y = v * float(level.height) + 0.5f;  // t + 1, t = x - 1/2
+    const int xi = int(x), yi = int(y);
+    const float fx = x - float(xi), fy = y - float(yi);
+    int xa = xi - 1, xb = xi;  // in [-1, width]: wrap once
+    if (xa < 0) xa += level.width;
+    if (xb >= level.width) xb -= level.width;
+    const int ya = std::clamp(yi - 1, 0, level.height - 1), yb = std::min(yi, level.height - 1);
+    const float* rowA = level.rgb.data() + std::size_t(ya) * level.width * 3;
+    const float* rowB = level.rgb.data() + std::size_t(yb) * level.width * 3;
+    Imath::V3f sum;  // as a + (b - a) f, so that equal neighbours come back exactly
+    for (int c = 0; c < 3; ++c) {
+        const float top = rowA[3 * xa + c] + (rowA[3 * xb + c] - rowA[3 * xa + c]) * fx;
+        const float bottom = rowB[3 * xa + c] + (rowB[3 * xb + c] - rowB[3 * xa + c]) * fx;
+        sum[c] = top + (bottom - top) * fy;
+    }
+    return sum;
+}
+
+// Level l has pixels pi 2^l / H tall: the finest level with pixels >= footprint / 2, so
+// bilinear taps `footprint` apart still see every pixel.
+int LatLongMap::levelFor(double footprint) const {
+    const double ratio = footprint * height() / kPi;
+    return ratio >= 2.0 ? std::min(std::ilogb(ratio), int(levels_.size()) - 1) : 0;
 }
 
 Imath::V3f LatLongMap::sample(double u, double v, double footprint) const {
-    // Level l has pixels pi 2^l / H tall: the finest level with pixels >= footprint / 2,
-    // so bilinear taps `footprint` apart still see every pixel.
-    const double ratio = footprint * height() / kPi;
-    const int level = ratio > 1.0 ? std::min(int(std::log2(ratio)), int(levels_.size()) - 1) : 0;
-    return bilinear(levels_[std::size_t(level)], u, v);
+    return sampleLevel(levelFor(footprint), float(u), float(v));
 }
 
 EnvironmentLight::EnvironmentLight(std::shared_ptr<const LatLongMap> map, const Imath::M44d& domeToWorld,

@@ -49,6 +49,10 @@ public:
     // Radiance averaged over about `footprint` radians around direction (u, v): bilinear on
     // the level of a box-filtered pyramid whose pixels are about `footprint` tall.
     Imath::V3f sample(double u, double v, double footprint) const;
+    // The same in two steps, for callers that look up many directions at one footprint:
+    // the level sample() picks, and the bilinear lookup on it (float arithmetic).
+    int levelFor(double footprint) const;
+    Imath::V3f sampleLevel(int level, float u, float v) const { return bilinear(levels_[std::size_t(level)], u, v); }
 
 private:
     struct Level {
@@ -56,7 +60,7 @@ private:
         std::vector<float> rgb;
     };
     static Level halve(const Level& fine);
-    Imath::V3f bilinear(const Level& level, double u, double v) const;
+    static Imath::V3f bilinear(const Level& level, float u, float v);
 
     std::vector<Level> levels_;  // [0] full resolution, then halved down to one row
 };

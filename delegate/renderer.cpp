@@ -79,10 +79,11 @@ FrameContext frameContext(const Frame& frame, const CameraView& camera, const Re
 // v / |v| with one division.
 Imath::V3d unit(const Imath::V3d& v) { return v * (1.0 / v.length()); }
 
-// The dome's radiance toward a world direction (any length), averaged over the footprint.
-Imath::V3f domeRadiance(const DomeView& dome, const Imath::V3d& worldDirection, double footprint) {
-    const Imath::V2d uv = latLongCoordinates(worldDirection * dome.worldToDome);
-    const Imath::V3f l = dome.map->sample(uv.x, uv.y, footprint);
+// The dome's radiance toward a world direction (any length), on the map's pyramid level for
+// the footprint (LatLongMap::levelFor).
+Imath::V3f domeRadiance(const DomeView& dome, const Imath::V3d& worldDirection, int level) {
+    const Imath::V2f uv = latLongCoordinates(Imath::V3f(worldDirection * dome.worldToDome));
+    const Imath::V3f l = dome.map->sampleLevel(level, uv.x, uv.y);
     return {l.x * float(dome.scale.x), l.y * float(dome.scale.y), l.z * float(dome.scale.z)};
 }
 
@@ -117,7 +118,7 @@ void background(const FrameContext& context, const Ray& ray, Pixel& pixel) {
     const Imath::V3d direction(ray.direction);
     for (const DomeView& dome : context.frame.domes) {
         if (!dome.visibleToCamera) continue;
-        pixel.background += domeRadiance(dome, direction, context.camera.pixelAngle());
+        pixel.background += domeRadiance(dome, direction, dome.map->levelFor(context.camera.pixelAngle()));
         pixel.alpha = 1.0f;
     }
 }
@@ -197,7 +198,7 @@ void shadeSpecular(const FrameContext& context, Block& block) {
         if (!context.frame.domes.empty()) {
             const Imath::V3d r = reflect(s.wo, s.n);
             for (const DomeView& dome : context.frame.domes)
-                result += domeRadiance(dome, r, s.mesh->footprint) * float(s.fresnelReflectance);
+                result += domeRadiance(dome, r, dome.map->levelFor(s.mesh->footprint)) * float(s.fresnelReflectance);
         }
         block.pixels[i].specular = result;
     }
