@@ -3,6 +3,7 @@
 #include "delegate/irradiance.h"
 #include "schema/error.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -62,6 +63,28 @@ Ray CameraView::ray(double px, double py) const {
     const double sy = (1.0 - 2.0 * py / height_) * halfHeight_;
     const Imath::V3d direction = Imath::V3d(sx, sy, -1.0) * rotation_;
     return {Imath::V3f(origin_), Imath::V3f(direction), float(near_), float(far_)};
+}
+
+// Each corner into camera space (row vectors: world = camera * rotation_, so camera =
+// world * rotation_^T), then onto the image by inverting ray(): px = (sx / halfWidth + 1)
+// width / 2 and py = (1 - sy / halfHeight) height / 2 with (sx, sy) = (x, y) / -z.
+CameraView::PixelRect CameraView::pixelBounds(const Imath::Box3f& world) const {
+    if (world.isEmpty()) return {};
+    const PixelRect whole{0, 0, width_, height_};
+    const Imath::M33d toCamera = rotation_.transposed();
+    double xMin = 1e300, yMin = 1e300, xMax = -1e300, yMax = -1e300;
+    for (int corner = 0; corner < 8; ++corner) {
+        const Imath::V3d p((corner & 1) ? world.max.x : world.min.x, (corner & 2) ? world.max.y : world.min.y,
+                           (corner & 4) ? world.max.z : world.min.z);
+        const Imath::V3d c = (p - origin_) * toCamera;
+        if (!(c.z < -1e-9 * std::max(1.0, c.length()))) return whole;  // at or behind the camera plane
+        const double px = (c.x / -c.z / halfWidth_ + 1.0) * 0.5 * width_;
+        const double py = (1.0 - c.y / -c.z / halfHeight_) * 0.5 * height_;
+        xMin = std::min(xMin, px), xMax = std::max(xMax, px), yMin = std::min(yMin, py), yMax = std::max(yMax, py);
+    }
+    const auto clampTo = [](double v, int hi) { return int(std::clamp(v, 0.0, double(hi))); };
+    return {clampTo(std::floor(xMin) - 1.0, width_), clampTo(std::floor(yMin) - 1.0, height_),
+            clampTo(std::ceil(xMax) + 1.0, width_), clampTo(std::ceil(yMax) + 1.0, height_)};
 }
 
 }  // namespace opal

@@ -43,6 +43,14 @@ public:
     // a camera-space z of -1, so the ray parameter t is the depth along the view axis.
     // t runs over [nearClip, farClip].
     Ray ray(double px, double py) const;
+    // Pixels whose rays may reach the world box: [x0, x1) x [y0, y1), conservative (one
+    // pixel of margin; the whole image when part of the box is not in front of the camera;
+    // empty for an empty box). Pixels outside it need no primary ray.
+    struct PixelRect {
+        int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+        bool overlaps(int ax0, int ay0, int ax1, int ay1) const { return ax0 < x1 && x0 < ax1 && ay0 < y1 && y0 < ay1; }
+    };
+    PixelRect pixelBounds(const Imath::Box3f& world) const;
     // The angle a pixel subtends at the image centre (radians).
     double pixelAngle() const { return 2.0 * halfHeight_ / height_; }
     const Imath::V3d& position() const { return origin_; }

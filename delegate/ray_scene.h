@@ -66,6 +66,8 @@ public:
     std::uint32_t triangleFace(std::uint32_t prim, std::uint32_t triangle) const;
     // The diagonal of the world bounding box of every mesh: the scale for ray offsets.
     float extent() const { return extent_; }
+    // The world bounding box of every mesh.
+    const Imath::Box3f& bounds() const { return bounds_; }
 
     bool occluded(const Ray& ray) const;
     // blocked[i] = 1 when rays[i] hits something, else 0 (Embree's stream API).

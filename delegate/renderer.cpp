@@ -55,12 +55,14 @@ struct FrameContext {
     const CameraView& camera;
     std::vector<MeshContext> meshes;  // by ray-scene prim number
     double shadowOffset = 0.0;        // kShadowOffset * the scene's extent
+    CameraView::PixelRect scene;      // where primary rays may hit (empty: no meshes)
 };
 
 FrameContext frameContext(const Frame& frame, const CameraView& camera, const RenderOptions& options) {
-    FrameContext context{frame, options, camera, {}, 0.0};
+    FrameContext context{frame, options, camera, {}, 0.0, {}};
     if (!frame.rays) return context;
     context.shadowOffset = kShadowOffset * frame.rays->extent();
+    context.scene = camera.pixelBounds(frame.rays->bounds());
     for (std::size_t prim = 0; prim < frame.meshes.size(); ++prim) {
         const MeshShading& shading = *frame.meshes[prim];
         MeshContext mesh;
@@ -212,7 +214,9 @@ void shadeBlock(const FrameContext& context, Block& block) {
     }
     const std::span<const Ray> rays = std::span(block.rays).first(std::size_t(block.count));
     const std::span<std::optional<RayHit>> hits = std::span(block.hits).first(std::size_t(block.count));
-    if (context.frame.rays)
+    // Blocks outside the scene's projected bounds miss everything: no rays traced.
+    const int x0 = block.x[0], y0 = block.y[0], x1 = block.x[block.count - 1] + 1, y1 = block.y[block.count - 1] + 1;
+    if (context.frame.rays && context.scene.overlaps(x0, y0, x1, y1))
         context.frame.rays->intersectCoherent(rays, hits);
     else
         std::fill(hits.begin(), hits.end(), std::nullopt);

@@ -57,6 +57,44 @@ TEST(CameraView, FollowsTheCameraTransform) {
     EXPECT_NEAR(Imath::V3d(centre.direction).length(), 1.0, 1e-6);  // depth stays in world units
 }
 
+// Slab test: does the ray through a pixel centre meet the box within [tNear, tFar]?
+bool rayMeetsBox(const Ray& ray, const Imath::Box3f& box) {
+    double t0 = ray.tNear, t1 = ray.tFar;
+    for (int a = 0; a < 3; ++a) {
+        const double inv = 1.0 / ray.direction[a];
+        double ta = (box.min[a] - ray.origin[a]) * inv, tb = (box.max[a] - ray.origin[a]) * inv;
+        if (ta > tb) std::swap(ta, tb);
+        t0 = std::max(t0, ta), t1 = std::min(t1, tb);
+    }
+    return t0 <= t1;
+}
+
+TEST(CameraView, PixelBoundsHoldEveryPixelWhoseRayMeetsTheBox) {
+    hd::CameraDesc desc = test::frontCamera(10.0);
+    Imath::M44d turn;
+    turn.setAxisAngle(Imath::V3d(0.3, 1, 0.2).normalized(), 0.4);
+    desc.transform = desc.transform * turn;
+    const CameraView view(desc, 160, 90, "/Camera");
+    for (const Imath::Box3f& box : {Imath::Box3f({-1, -1, -1}, {1, 1, 1}), Imath::Box3f({2, -0.5f, -3}, {3, 2, 0}),
+                                    Imath::Box3f({-4, -4, -4}, {-3.5f, -3, -3.8f})}) {
+        const CameraView::PixelRect r = view.pixelBounds(box);
+        int inside = 0;
+        for (int y = 0; y < 90; ++y)
+            for (int x = 0; x < 160; ++x) {
+                if (!rayMeetsBox(view.ray(x + 0.5, y + 0.5), box)) continue;
+                ++inside;
+                ASSERT_TRUE(x >= r.x0 && x < r.x1 && y >= r.y0 && y < r.y1) << "pixel " << x << ", " << y;
+            }
+        EXPECT_GT(inside, 0);
+        EXPECT_LT((r.x1 - r.x0) * (r.y1 - r.y0), 4 * inside + 400) << "the bounds should be tight";
+    }
+    // A box around the camera: the whole image. An empty box: nothing.
+    const CameraView::PixelRect around = view.pixelBounds(Imath::Box3f({-20, -20, -20}, {20, 20, 20}));
+    EXPECT_TRUE(around.x0 == 0 && around.y0 == 0 && around.x1 == 160 && around.y1 == 90);
+    const CameraView::PixelRect none = view.pixelBounds(Imath::Box3f());
+    EXPECT_FALSE(none.overlaps(0, 0, 160, 90));
+}
+
 TEST(CameraView, RejectsBadCamerasNamingThePrim) {
     hd::CameraDesc desc;
     desc.focalLength = 0.0;
