@@ -58,7 +58,7 @@ public:
     double lastRenderMs() const { return lastRenderMs_; }
     static std::vector<hd::Token> statisticNames();
     // Warnings since the last call (materials clamped into an asset's editable range).
-    std::vector<std::string> takeWarnings();
+    std::vector<std::string> takeWarnings() override;
     // Every translucent mesh of the last commit in primId order (by path; invisible ones
     // keep their number).
     const std::vector<hd::SdfPath>& meshPaths() const { return meshPaths_; }

@@ -8,6 +8,7 @@
 
 #include <map>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace opal::hd {
@@ -36,6 +37,11 @@ public:
     // Called once after every sync of the index: the delegate updates what depends on
     // several prims (lights -> irradiance -> relighting).
     virtual void commitResources(RenderIndex& index) = 0;
+
+    // What the delegate noticed but rendered anyway since the last call (e.g. a material
+    // clamped into an asset's editable range), one message each, for the host to report.
+    // Hydra routes these through TfDiagnostic, a process-wide sink; here the host pulls.
+    virtual std::vector<std::string> takeWarnings() { return {}; }
 };
 
 }  // namespace opal::hd

@@ -59,9 +59,10 @@ RenderDelegateHandle createDelegate(const RendererPluginHandle& plugin, const sc
     return delegate;
 }
 
-// Syncs the scene into a render index on `delegate` and renders `buffers` through it.
+// Syncs the scene into a render index on `delegate` and renders `buffers` through it;
+// what the delegate warned about on the way goes to `warnings`.
 void renderFrame(hd::RenderDelegate& delegate, scene::Scene scene, const scene::RenderSetup& setup,
-                 const AovBuffers& buffers, StageTimer& timer) {
+                 const AovBuffers& buffers, StageTimer& timer, std::ostream& warnings) {
     const scene::UsdaSceneSource source(std::move(scene));
     hd::RenderIndex index(delegate);
     source.populate(index);
@@ -77,6 +78,7 @@ void renderFrame(hd::RenderDelegate& delegate, scene::Scene scene, const scene::
     state.width = setup.resolution.width;
     state.height = setup.resolution.height;
     pass->execute(state, buffers.bindings());
+    for (const std::string& warning : delegate.takeWarnings()) warnings << "opal-render: warning: " << warning << '\n';
     timer.lap("render");
 }
 
@@ -126,7 +128,7 @@ std::string renderScene(const RenderOptions& options, std::ostream& warnings) {
     timer.lap("delegate");
 
     const AovBuffers buffers(options.aovs, display.has_value());
-    renderFrame(*delegate, std::move(scene), setup, buffers, timer);
+    renderFrame(*delegate, std::move(scene), setup, buffers, timer, warnings);
 
     std::vector<std::string> writeWarnings;
     FrameContent content{buffers.exrLayers(), config.workingSpaceIdentity(&writeWarnings),

@@ -178,6 +178,31 @@ TEST(OpalRender, SelectedAovsOnly) {
     EXPECT_EQ(in->spec().format, OIIO::TypeDesc::FLOAT);  // --float: no half channel left
 }
 
+// The delegate's warnings (a material clamped into the asset's editable range) reach the
+// user through the plugin interface, and the frame is still written.
+TEST(OpalRender, ReportsTheDelegatesWarnings) {
+    const test::SceneDir dir;
+    dir.writeSphereAsset("sphere");
+    std::string scene = litScene("2000");
+    scene.replace(scene.find("def \"Sphere\" (\n"), std::string("def \"Sphere\" (\n").size(),
+                  "def \"Sphere\" (\n    prepend apiSchemas = [\"MaterialBindingAPI\"]\n");
+    scene.replace(scene.find("{\n}\n"), 4, "{\n    rel material:binding = </Glass>\n}\n");
+    scene += R"(
+def Material "Glass"
+{
+    token opal:preset = "marble"
+    float opal:eta = 2.9
+}
+)";
+    dir.write("scene.usda", scene);
+    const ProcessResult run = runOpalRender(dir, "'" + (dir / "scene.usda").string() + "' -o '" + (dir / "out.exr").string() + "'");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_NE(run.err.find("opal-render: warning:"), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("/Glass"), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("eta"), std::string::npos) << run.err;
+    EXPECT_TRUE(std::filesystem::is_regular_file(dir / "out.exr"));
+}
+
 TEST(OpalRender, MalformedSceneExitsOneAndWritesNothing) {
     const test::SceneDir dir;
     dir.writeSphereAsset("sphere");
