@@ -15,6 +15,7 @@
 #include <cstring>
 #include <numbers>
 #include <string>
+#include <utility>
 
 namespace opal {
 
@@ -133,12 +134,19 @@ void RelightEngine::formRadiance(bool reweigh) {
     });
     cdf97InverseCharts(std::span<float>(radiance_), asset_->layout, 3);
     const VertexWeights& weights = asset_->vertexWeights;
-    vertexRadiance_.resize(weights.offsets.empty() ? 0 : (weights.offsets.size() - 1) * 3);
-    if (!vertexRadiance_.empty()) interpolateToVertices(weights, radiance_, vertexRadiance_);
+    if (vertexRadiance_.use_count() > 1) {
+        std::shared_ptr<std::vector<float>> next = spareVertexRadiance_ && spareVertexRadiance_.use_count() == 1
+                                                       ? std::move(spareVertexRadiance_)
+                                                       : std::make_shared<std::vector<float>>();
+        spareVertexRadiance_ = std::exchange(vertexRadiance_, std::move(next));
+    }
+    vertexRadiance_->resize(weights.offsets.empty() ? 0 : (weights.offsets.size() - 1) * 3);
+    if (!vertexRadiance_->empty()) interpolateToVertices(weights, radiance_, *vertexRadiance_, &padded_);
     if (reweigh) irradiance_ = moments_.combine(fresnel_);
 }
 
-void interpolateToVertices(const VertexWeights& weights, std::span<const float> perSample, std::span<float> out) {
+void interpolateToVertices(const VertexWeights& weights, std::span<const float> perSample, std::span<float> out,
+                           std::vector<Float4>* scratch) {
     const std::size_t vertices = weights.offsets.empty() ? 0 : weights.offsets.size() - 1;
     if (out.size() != vertices * 3 || weights.samples.size() != weights.weights.size() ||
         (vertices > 0 && weights.offsets.back() != weights.samples.size()))
@@ -148,7 +156,9 @@ void interpolateToVertices(const VertexWeights& weights, std::span<const float> 
     // The samples' RGB padded to four lanes: one aligned load per weight. The gathers are
     // what this costs (1.1 million at 65,536 samples and 139,330 vertices), not the sums.
     const std::size_t samples = perSample.size() / 3;
-    std::vector<Float4> padded(samples);
+    std::vector<Float4> local;
+    std::vector<Float4>& padded = scratch ? *scratch : local;
+    padded.resize(samples);
     for (std::size_t i = 0; i < samples; ++i)
         padded[i] = Float4{perSample[3 * i], perSample[3 * i + 1], perSample[3 * i + 2], 0.0f};
     std::atomic<bool> outOfRange = false;

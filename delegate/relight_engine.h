@@ -15,6 +15,7 @@
 // changes), parallel with TBB.
 #pragma once
 
+#include "delegate/float4.h"
 #include "delegate/irradiance.h"
 #include "delegate/transfer_product.h"
 #include "schema/asset/translucent_asset.h"
@@ -43,7 +44,11 @@ public:
     const Material& material() const { return material_; }  // as clamped
 
     std::span<const float> sampleRadiance() const { return radiance_; }       // samples x 3
-    std::span<const float> vertexRadiance() const { return vertexRadiance_; } // render-mesh vertices x 3
+    std::span<const float> vertexRadiance() const { return *vertexRadiance_; } // render-mesh vertices x 3
+    // The same buffer, for frames to hold. Held buffers never change: the next edit writes
+    // into whichever of two buffers no one else holds (a host that keeps the last frame
+    // costs no allocation), else into a new one.
+    std::shared_ptr<const std::vector<float>> sharedVertexRadiance() const { return vertexRadiance_; }
     // E(x_i; eta) = sum_m c_m(eta) E_m(x_i): samples x 3.
     std::span<const float> sampleIrradiance() const { return irradiance_; }
 
@@ -63,11 +68,17 @@ private:
     Material material_;
     std::vector<double> fresnel_;    // c_m(material_.eta)
     std::vector<float> profile_;     // s_k / pi: 3 x paddedK
-    std::vector<float> radiance_, vertexRadiance_, irradiance_;
+    std::vector<float> radiance_, irradiance_;
+    std::shared_ptr<std::vector<float>> vertexRadiance_ = std::make_shared<std::vector<float>>();
+    std::shared_ptr<std::vector<float>> spareVertexRadiance_;
+    std::vector<Float4> padded_;     // interpolateToVertices' scratch
 };
 
 // Per render-mesh vertex, sum_j w_j value[sample_j] (RGB): the asset's VertexWeights.
 // out: vertices x 3. Throws opal::Error on inconsistent sizes.
-void interpolateToVertices(const VertexWeights& weights, std::span<const float> perSample, std::span<float> out);
+// scratch (optional) holds the samples padded to four lanes between calls, so that a caller
+// interpolating on every edit allocates nothing (fresh megabytes cost page faults).
+void interpolateToVertices(const VertexWeights& weights, std::span<const float> perSample, std::span<float> out,
+                           std::vector<Float4>* scratch = nullptr);
 
 }  // namespace opal

@@ -145,7 +145,7 @@ Surface shadeSurface(const FrameContext& context, const Ray& ray, const RayHit& 
     const double muO = std::max(0.0, s.n.dot(s.wo));
     const double transmittance = fresnelTransmittance(shading.eta, muO);
     s.fresnelReflectance = 1.0 - transmittance;  // fresnelReflectance(eta, n.wo): F_t clamps the same way
-    pixel.subsurface = interpolate(shading.vertexRadiance, v, b) * float(transmittance);
+    pixel.subsurface = interpolate(*shading.vertexRadiance, v, b) * float(transmittance);
     pixel.irradiance = interpolate(*shading.vertexIrradiance, v, b);
     pixel.normal = Imath::V3f(s.n);
     pixel.depth = hit.t;

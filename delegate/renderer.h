@@ -27,7 +27,7 @@ namespace opal {
 struct MeshShading {
     std::shared_ptr<const TranslucentAsset> asset;  // render-mesh topology and normals
     Imath::M33f normalToWorld;                      // rotation of the mesh's transform
-    std::vector<float> vertexRadiance;              // L(x_o) per render-mesh vertex, RGB
+    std::shared_ptr<const std::vector<float>> vertexRadiance;  // L(x_o) per render-mesh vertex, RGB
     // E per render-mesh vertex, RGB: shared by successive commits while the lights and eta
     // stay (a sigma edit does not change it).
     std::shared_ptr<const std::vector<float>> vertexIrradiance;

@@ -188,8 +188,7 @@ void TranslucentMesh::updateRadiance(bool reference, int primId, CommitStats& st
             stats.productsMs += clock.ms();
         }
         const Stopwatch clock;
-        const std::span<const float> radiance = engine_->vertexRadiance();
-        shading->vertexRadiance.assign(radiance.begin(), radiance.end());
+        shading->vertexRadiance = engine_->sharedVertexRadiance();
         shading->eta = engine_->material().eta;
         const IrradianceKey irradianceKey{false, momentsVersion_, shading->eta};
         if (!vertexIrradiance_ || irradianceKey != irradianceKey_) {
@@ -209,7 +208,7 @@ void TranslucentMesh::updateRadiance(bool reference, int primId, CommitStats& st
         } catch (const Error& e) {
             fail(e.what());
         }
-        shading->vertexRadiance = toVertices(weights, gathered);
+        shading->vertexRadiance = std::make_shared<const std::vector<float>>(toVertices(weights, gathered));
         vertexIrradiance_ = std::make_shared<const std::vector<float>>(toVertices(weights, exact));
         irradianceKey_ = {true, momentsVersion_, m.eta};
         shading->eta = m.eta;

@@ -90,6 +90,37 @@ TEST(RelightEngine, MaterialEditsEqualAFullRecompute) {
     }
 }
 
+TEST(RelightEngine, HeldVertexRadianceNeverChangesAndFreeBuffersAreReused) {
+    const auto asset = slabAsset();
+    RelightEngine engine(asset);
+    engine.setIrradiance(test::randomMoments(std::uint32_t(asset->samples.size()), 2, 9));
+    const Material a{{1.4, 0.7, 0.5}, {0.04, 0.12, 0.3}, 1.3}, b{{0.6, 1.1, 0.9}, {0.1, 0.06, 0.08}, 1.25};
+    // A host holding each frame: every edit gets a buffer of its own.
+    std::shared_ptr<const std::vector<float>> first = engine.sharedVertexRadiance();
+    const std::vector<float> firstValues = *first;
+    engine.setMaterial(a);
+    std::shared_ptr<const std::vector<float>> second = engine.sharedVertexRadiance();
+    const std::vector<float> secondValues = *second;
+    engine.setMaterial(b);
+    EXPECT_EQ(*first, firstValues);
+    EXPECT_EQ(*second, secondValues);
+    EXPECT_NE(*engine.sharedVertexRadiance(), secondValues);
+    EXPECT_EQ(std::span<const float>(*engine.sharedVertexRadiance()).data(), engine.vertexRadiance().data());
+    // A host keeping only the last frame: two buffers alternate, nothing is allocated.
+    first.reset(), second.reset();
+    std::shared_ptr<const std::vector<float>> held = engine.sharedVertexRadiance();
+    const std::vector<float>* previous = held.get();
+    engine.setMaterial(a);
+    held = engine.sharedVertexRadiance();
+    const std::vector<float>* current = held.get();
+    EXPECT_NE(current, previous);
+    engine.setMaterial(b);
+    held = engine.sharedVertexRadiance();
+    EXPECT_EQ(held.get(), previous);
+    engine.setMaterial(a);
+    EXPECT_EQ(engine.sharedVertexRadiance().get(), current);
+}
+
 TEST(RelightEngine, ClampsMaterialsToTheEditableRange) {
     const auto asset = slabAsset();
     RelightEngine engine(asset);
