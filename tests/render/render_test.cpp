@@ -215,33 +215,5 @@ TEST(Render, ReferenceModeAgreesWithTheLosslessEngine) {
     EXPECT_EQ(engine.data.at(hd::Aov::Specular), reference.data.at(hd::Aov::Specular));
 }
 
-TEST(Render, FrameTimeAt720p) {
-    LitSphere s;
-    std::vector<std::unique_ptr<hd::RenderBuffer>> buffers;
-    std::vector<hd::AovBinding> bindings;
-    for (const hd::Token& aov : test::allAovs()) {
-        buffers.push_back(std::make_unique<hd::RenderBuffer>("/Buffers/" + aov));
-        bindings.push_back({aov, buffers.back().get()});
-    }
-    std::unique_ptr<hd::RenderPass> pass = s.delegate.createRenderPass(s.index);
-    hd::RenderPassState state;
-    state.camera = test::CameraPath;
-    state.width = 1280;
-    state.height = 720;
-    pass->execute(state, bindings);  // warm up: buffers allocated
-    constexpr int kFrames = 5;
-    double wall = 1e30;
-    const std::clock_t cpuStart = std::clock();
-    for (int frame = 0; frame < kFrames; ++frame) {
-        const auto start = std::chrono::steady_clock::now();
-        pass->execute(state, bindings);
-        wall = std::min(wall, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-    }
-    const double cpu = 1000.0 * double(std::clock() - cpuStart) / CLOCKS_PER_SEC / kFrames;
-    std::printf("[ timing   ] 1280 x 720, every AOV, one point light: best %.1f ms wall, %.1f ms CPU per frame "
-                "(all threads); last commit %.1f ms\n", wall, cpu, s.delegate.lastCommit().totalMs);
-    EXPECT_EQ(buffers[0]->data().size(), 1280u * 720u * 4u);
-}
-
 }  // namespace
 }  // namespace opal
