@@ -71,21 +71,21 @@ void writeBakeReport(const std::filesystem::path& path, const BakeOptions& optio
 }
 
 std::string formatBakeSummary(const std::filesystem::path& stem, const BakeReport& r) {
-    const auto mb = [](std::uint64_t b) { return double(b) / (1024.0 * 1024.0); };
+    const auto mib = [](std::uint64_t b) { return double(b) / (1024.0 * 1024.0); };
     double total = 0.0;
     for (const auto& [stage, s] : r.seconds) total += s;
     char buf[1024];
     std::snprintf(buf, sizeof buf,
                   "opal-bake: wrote %s.usda and %s.opal\n"
                   "  samples %llu (%u charts of %ux%u), render vertices %llu\n"
-                  "  transfer  raw %.1f MB | step 1 (Haar) %.1f MB | step 2 (CDF 9/7) %.1f MB | sidecar %.1f MB\n"
+                  "  transfer  raw %.1f MiB | step 1 (Haar) %.1f MiB | step 2 (CDF 9/7) %.1f MiB | sidecar %.1f MiB\n"
                   "  compression %.0fx, energy kept %.6f, transfer rel. RMSE %.4f\n"
-                  "  %.1f s, peak memory %.0f MB\n",
+                  "  %.1f s, peak memory %.0f MiB\n",
                   stem.string().c_str(), stem.string().c_str(), (unsigned long long)r.samples, r.charts, r.grid,
-                  r.grid, (unsigned long long)r.renderVertices, mb(r.transfer.rawBytes), mb(r.transfer.step1Bytes),
-                  mb(r.transfer.step2Bytes), mb(r.sidecarBytes),
+                  r.grid, (unsigned long long)r.renderVertices, mib(r.transfer.rawBytes), mib(r.transfer.step1Bytes),
+                  mib(r.transfer.step2Bytes), mib(r.sidecarBytes),
                   r.sidecarBytes ? double(r.transfer.rawBytes) / double(r.sidecarBytes) : 0.0, r.transfer.energyKept,
-                  r.transferRelRmse, total, mb(r.peakRssBytes));
+                  r.transferRelRmse, total, mib(r.peakRssBytes));
     return buf;
 }
 
