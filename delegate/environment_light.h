@@ -53,6 +53,17 @@ public:
     // the level sample() picks, and the bilinear lookup on it (float arithmetic).
     int levelFor(double footprint) const;
     Imath::V3f sampleLevel(int level, float u, float v) const { return bilinear(levels_[std::size_t(level)], u, v); }
+    // One level's pixels (width x height x 3 floats, top row first), for vectorized lookups
+    // that reproduce sampleLevel (dome_lookup.h). level < levels().
+    struct LevelPixels {
+        int width = 0, height = 0;
+        const float* rgb = nullptr;
+    };
+    int levels() const { return int(levels_.size()); }
+    LevelPixels levelPixels(int level) const {
+        const Level& l = levels_[std::size_t(level)];
+        return {l.width, l.height, l.rgb.data()};
+    }
 
 private:
     struct Level {

@@ -1,6 +1,7 @@
 #include "delegate/renderer.h"
 
-#include "delegate/lat_long_lookup.h"
+#include "delegate/dome_lookup.h"
+
 #include "delegate/specular.h"
 #include "schema/scatter/dipole.h"
 
@@ -54,12 +55,18 @@ struct FrameContext {
     const RenderOptions& options;
     const CameraView& camera;
     std::vector<MeshContext> meshes;  // by ray-scene prim number
+    std::vector<DomeLookup> domes;    // frame.domes, as the pixel loop looks them up
+    std::vector<int> backgroundLevels;  // per dome: its pyramid level for one pixel (-1: not visible)
     double shadowOffset = 0.0;        // kShadowOffset * the scene's extent
     CameraView::PixelRect scene;      // where primary rays may hit (empty: no meshes)
 };
 
 FrameContext frameContext(const Frame& frame, const CameraView& camera, const RenderOptions& options) {
-    FrameContext context{frame, options, camera, {}, 0.0, {}};
+    FrameContext context{frame, options, camera, {}, {}, {}, 0.0, {}};
+    for (const DomeView& dome : frame.domes) {
+        context.domes.emplace_back(dome.map, dome.worldToDome, Imath::V3f(dome.scale.x, dome.scale.y, dome.scale.z));
+        context.backgroundLevels.push_back(dome.visibleToCamera ? context.domes.back().levelFor(camera.pixelAngle()) : -1);
+    }
     if (!frame.rays) return context;
     context.shadowOffset = kShadowOffset * frame.rays->extent();
     context.scene = camera.pixelBounds(frame.rays->bounds());
@@ -80,14 +87,6 @@ FrameContext frameContext(const Frame& frame, const CameraView& camera, const Re
 
 // v / |v| with one division.
 Imath::V3d unit(const Imath::V3d& v) { return v * (1.0 / v.length()); }
-
-// The dome's radiance toward a world direction (any length), on the map's pyramid level for
-// the footprint (LatLongMap::levelFor).
-Imath::V3f domeRadiance(const DomeView& dome, const Imath::V3d& worldDirection, int level) {
-    const Imath::V2f uv = latLongCoordinates(Imath::V3f(worldDirection * dome.worldToDome));
-    const Imath::V3f l = dome.map->sampleLevel(level, uv.x, uv.y);
-    return {l.x * float(dome.scale.x), l.y * float(dome.scale.y), l.z * float(dome.scale.z)};
-}
 
 // sum_j b_j value[v_j] over the hit triangle's vertices, RGB.
 Imath::V3f interpolate(const std::vector<float>& values, const std::uint32_t* v, const float* b) {
@@ -115,13 +114,28 @@ struct Block {
     std::array<Pixel, kBlockPixels> pixels;
 };
 
-void background(const FrameContext& context, const Ray& ray, Pixel& pixel) {
+// The domes visible to the camera behind the pixels whose rays missed, one lookup call per
+// dome for the block.
+void background(const FrameContext& context, Block& block) {
     if (context.options.transparentBackground) return;
-    const Imath::V3d direction(ray.direction);
-    for (const DomeView& dome : context.frame.domes) {
-        if (!dome.visibleToCamera) continue;
-        pixel.background += domeRadiance(dome, direction, dome.map->levelFor(context.camera.pixelAngle()));
-        pixel.alpha = 1.0f;
+    std::array<Imath::V3f, kBlockPixels> directions;
+    std::array<int, kBlockPixels> pixelOf{};
+    std::size_t count = 0;
+    for (int i = 0; i < block.count; ++i)
+        if (!block.hits[i]) {
+            directions[count] = block.rays[i].direction;
+            pixelOf[count++] = i;
+        }
+    if (count == 0) return;
+    std::array<Imath::V3f, kBlockPixels> radiance;
+    for (std::size_t d = 0; d < context.domes.size(); ++d) {
+        if (context.backgroundLevels[d] < 0) continue;
+        context.domes[d].radiance(directions.data(), count, context.backgroundLevels[d], radiance.data());
+        for (std::size_t k = 0; k < count; ++k) {
+            Pixel& pixel = block.pixels[pixelOf[k]];
+            pixel.background += radiance[k];
+            pixel.alpha = 1.0f;
+        }
     }
 }
 
@@ -187,6 +201,35 @@ void analyticSpecular(const FrameContext& context, const Block& block, std::arra
     }
 }
 
+// The domes' reflection F_r(eta, n.v) L_dome(reflect(v, n), footprint) at the block's
+// specular surfaces: one lookup call per dome and run of surfaces of one mesh.
+void domeReflections(const FrameContext& context, Block& block) {
+    if (context.domes.empty()) return;
+    std::array<Imath::V3f, kBlockPixels> directions, radiance;
+    std::array<int, kBlockPixels> pixelOf{};
+    for (int first = 0; first < block.count;) {
+        const MeshContext* mesh = block.surfaces[first].mesh;
+        if (!mesh) {
+            ++first;
+            continue;
+        }
+        std::size_t count = 0;
+        int i = first;
+        for (; i < block.count && (block.surfaces[i].mesh == mesh || !block.surfaces[i].mesh); ++i) {
+            const Surface& s = block.surfaces[i];
+            if (!s.mesh) continue;
+            directions[count] = Imath::V3f(reflect(s.wo, s.n));
+            pixelOf[count++] = i;
+        }
+        first = i;
+        for (const DomeLookup& dome : context.domes) {
+            dome.radiance(directions.data(), count, dome.levelFor(mesh->footprint), radiance.data());
+            for (std::size_t k = 0; k < count; ++k)
+                block.pixels[pixelOf[k]].specular += radiance[k] * float(block.surfaces[pixelOf[k]].fresnelReflectance);
+        }
+    }
+}
+
 // The specular layer (specular.h): the analytic lights, then the domes' reflection
 // F_r(eta, n.v) L_dome(reflect(v, n), footprint).
 void shadeSpecular(const FrameContext& context, Block& block) {
@@ -196,14 +239,9 @@ void shadeSpecular(const FrameContext& context, Block& block) {
     for (int i = 0; i < block.count; ++i) {
         const Surface& s = block.surfaces[i];
         if (!s.mesh) continue;
-        Imath::V3f result(sums[i]);
-        if (!context.frame.domes.empty()) {
-            const Imath::V3d r = reflect(s.wo, s.n);
-            for (const DomeView& dome : context.frame.domes)
-                result += domeRadiance(dome, r, dome.map->levelFor(s.mesh->footprint)) * float(s.fresnelReflectance);
-        }
-        block.pixels[i].specular = result;
+        block.pixels[i].specular = Imath::V3f(sums[i]);
     }
+    domeReflections(context, block);
 }
 
 void shadeBlock(const FrameContext& context, Block& block) {
@@ -222,13 +260,11 @@ void shadeBlock(const FrameContext& context, Block& block) {
         std::fill(hits.begin(), hits.end(), std::nullopt);
     bool specular = false;
     for (int i = 0; i < block.count; ++i) {
-        if (hits[i]) {
-            block.surfaces[i] = shadeSurface(context, rays[i], *hits[i], block.pixels[i]);
-            specular = specular || block.surfaces[i].mesh;
-        } else {
-            background(context, rays[i], block.pixels[i]);
-        }
+        if (!hits[i]) continue;
+        block.surfaces[i] = shadeSurface(context, rays[i], *hits[i], block.pixels[i]);
+        specular = specular || block.surfaces[i].mesh;
     }
+    background(context, block);
     if (specular) shadeSpecular(context, block);
 }
 
