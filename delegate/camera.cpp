@@ -56,14 +56,17 @@ CameraView::CameraView(const hd::CameraDesc& desc, int width, int height, const 
         halfWidth_ = halfHeight_ * imageAspect;
     else
         halfHeight_ = halfWidth_ / imageAspect;
+    // Camera-space direction (sx, sy, -1), sx = (2 px / width - 1) halfWidth,
+    // sy = (1 - 2 py / height) halfHeight, turned into the world by the rotation's rows.
+    const Imath::V3d right(rotation_[0][0], rotation_[0][1], rotation_[0][2]);
+    const Imath::V3d up(rotation_[1][0], rotation_[1][1], rotation_[1][2]);
+    const Imath::V3d back(rotation_[2][0], rotation_[2][1], rotation_[2][2]);
+    originF_ = Imath::V3f(origin_);
+    stepX_ = Imath::V3f(right * (2.0 * halfWidth_ / width_));
+    stepY_ = Imath::V3f(up * (-2.0 * halfHeight_ / height_));
+    corner_ = Imath::V3f(right * -halfWidth_ + up * halfHeight_ - back);
 }
 
-Ray CameraView::ray(double px, double py) const {
-    const double sx = (2.0 * px / width_ - 1.0) * halfWidth_;
-    const double sy = (1.0 - 2.0 * py / height_) * halfHeight_;
-    const Imath::V3d direction = Imath::V3d(sx, sy, -1.0) * rotation_;
-    return {Imath::V3f(origin_), Imath::V3f(direction), float(near_), float(far_)};
-}
 
 // Each corner into camera space (row vectors: world = camera * rotation_, so camera =
 // world * rotation_^T), then onto the image by inverting ray(): px = (sx / halfWidth + 1)

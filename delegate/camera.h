@@ -41,8 +41,12 @@ public:
     int height() const { return height_; }
     // The ray through image position (px, py) in pixels (x right, y down): its direction has
     // a camera-space z of -1, so the ray parameter t is the depth along the view axis.
-    // t runs over [nearClip, farClip].
-    Ray ray(double px, double py) const;
+    // t runs over [nearClip, farClip]. In float, from per-view constants: the pixel loop
+    // asks for one per pixel.
+    Ray ray(double px, double py) const {
+        const Imath::V3f d = stepX_ * float(px) + stepY_ * float(py) + corner_;
+        return {originF_, d, float(near_), float(far_)};
+    }
     // Pixels whose rays may reach the world box: [x0, x1) x [y0, y1), conservative (one
     // pixel of margin; the whole image when part of the box is not in front of the camera;
     // empty for an empty box). Pixels outside it need no primary ray.
@@ -61,6 +65,8 @@ private:
     Imath::M33d rotation_;  // camera to world, row vectors
     double halfWidth_ = 0.0, halfHeight_ = 0.0;  // the image's half extents on the plane z = -1
     double near_ = 0.0, far_ = 0.0;
+    // World direction = stepX px + stepY py + corner (the ray through (px, py)).
+    Imath::V3f originF_, stepX_, stepY_, corner_;
 };
 
 }  // namespace opal

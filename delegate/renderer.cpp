@@ -1,9 +1,9 @@
 #include "delegate/renderer.h"
 
 #include "delegate/dome_lookup.h"
+#include "delegate/fresnel_table.h"
 
 #include "delegate/specular.h"
-#include "schema/scatter/dipole.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -12,6 +12,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace opal {
 
@@ -47,6 +48,7 @@ struct MeshContext {
     double alpha = 0.0;                        // ggxAlpha(roughness)
     double footprint = 0.0;                    // reflectionFootprint(alpha)
     bool specular = false;                     // the GGX layer is on (render setting and material)
+    std::optional<FresnelTable> fresnel;       // F_t(shading->eta, .)
 };
 
 // The frame as the pixel loop reads it.
@@ -73,6 +75,7 @@ FrameContext frameContext(const Frame& frame, const CameraView& camera, const Re
     for (std::size_t prim = 0; prim < frame.meshes.size(); ++prim) {
         const MeshShading& shading = *frame.meshes[prim];
         MeshContext mesh;
+        mesh.fresnel.emplace(shading.eta);
         mesh.shading = &shading;
         mesh.triangles = frame.rays->triangles(std::uint32_t(prim));
         const RenderMesh& renderMesh = shading.asset->mesh;
@@ -157,7 +160,7 @@ Surface shadeSurface(const FrameContext& context, const Ray& ray, const RayHit& 
         if (world.length() > 0.0) s.n = unit(world);
     }
     const double muO = std::max(0.0, s.n.dot(s.wo));
-    const double transmittance = fresnelTransmittance(shading.eta, muO);
+    const double transmittance = mesh.fresnel->transmittance(muO);
     s.fresnelReflectance = 1.0 - transmittance;  // fresnelReflectance(eta, n.wo): F_t clamps the same way
     pixel.subsurface = interpolate(*shading.vertexRadiance, v, b) * float(transmittance);
     pixel.irradiance = interpolate(*shading.vertexIrradiance, v, b);
