@@ -194,7 +194,7 @@ void analyticSpecular(const FrameContext& context, const Block& block, std::arra
             if (!s.mesh) continue;
             const std::optional<Incidence> in = light.incidence(s.p);
             if (!in || s.ng.dot(in->toLight) <= 0.0) continue;  // no light, or below the surface
-            const double f = ggxReflectance(s.n, s.wo, in->toLight, s.mesh->alpha, s.mesh->shading->eta);
+            const double f = ggxReflectance(s.n, s.wo, in->toLight, s.mesh->alpha, *s.mesh->fresnel);
             if (f <= 0.0) continue;
             Ray& shadow = shadows[count];
             shadow.origin = Imath::V3f(s.p + s.ng * context.shadowOffset);

@@ -24,7 +24,11 @@ double ggxDistribution(double nDotH, double alpha) {
     return a2 / (std::numbers::pi * d * d);
 }
 
-double ggxReflectance(const Imath::V3d& n, const Imath::V3d& v, const Imath::V3d& l, double alpha, double eta) {
+namespace {
+
+// f_s(l, v) (n.l) with F_r from `reflectance(cos theta)`.
+template <typename Reflectance>
+double ggx(const Imath::V3d& n, const Imath::V3d& v, const Imath::V3d& l, double alpha, const Reflectance& reflectance) {
     const double nl = n.dot(l), nv = n.dot(v);
     if (nl <= 0.0 || nv <= 0.0) return 0.0;
     Imath::V3d h = l + v;
@@ -35,7 +39,18 @@ double ggxReflectance(const Imath::V3d& n, const Imath::V3d& v, const Imath::V3d
     // Smith height-correlated masking-shadowing, folded with 1 / (4 n.l n.v).
     const double visibility =
         0.5 / (nl * std::sqrt(nv * nv * (1.0 - a2) + a2) + nv * std::sqrt(nl * nl * (1.0 - a2) + a2));
-    return ggxDistribution(n.dot(h), alpha) * visibility * fresnelReflectance(eta, v.dot(h)) * nl;
+    return ggxDistribution(n.dot(h), alpha) * visibility * reflectance(v.dot(h)) * nl;
+}
+
+}  // namespace
+
+double ggxReflectance(const Imath::V3d& n, const Imath::V3d& v, const Imath::V3d& l, double alpha, double eta) {
+    return ggx(n, v, l, alpha, [eta](double c) { return fresnelReflectance(eta, c); });
+}
+
+double ggxReflectance(const Imath::V3d& n, const Imath::V3d& v, const Imath::V3d& l, double alpha,
+                      const FresnelTable& fresnel) {
+    return ggx(n, v, l, alpha, [&fresnel](double c) { return 1.0 - fresnel.transmittance(c); });
 }
 
 Imath::V3d reflect(const Imath::V3d& v, const Imath::V3d& n) { return n * (2.0 * n.dot(v)) - v; }

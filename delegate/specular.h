@@ -13,6 +13,8 @@
 // reflection), and is exact for a mirror (r = 0) and for a uniform dome up to masking.
 #pragma once
 
+#include "delegate/fresnel_table.h"
+
 #include <Imath/ImathVec.h>
 
 namespace opal {
@@ -29,6 +31,9 @@ double ggxDistribution(double nDotH, double alpha);
 // f_s(l, v) (n.l): the BRDF times the cosine. n, v (toward the viewer), l (toward the
 // light) unit vectors. Zero when l or v is below the surface.
 double ggxReflectance(const Imath::V3d& n, const Imath::V3d& v, const Imath::V3d& l, double alpha, double eta);
+// The same with F_r from a table of F_t (fresnel_table.h: within 1e-5), for the pixel loop.
+double ggxReflectance(const Imath::V3d& n, const Imath::V3d& v, const Imath::V3d& l, double alpha,
+                      const FresnelTable& fresnel);
 
 // The mirror direction of v about n (both unit): 2 (n.v) n - v.
 Imath::V3d reflect(const Imath::V3d& v, const Imath::V3d& n);

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <random>
+
 #include <cmath>
 #include <numbers>
 
@@ -70,6 +72,20 @@ TEST(Specular, IsReciprocalAndZeroBelowTheHorizon) {
     EXPECT_NEAR(ggxReflectance(n, a, b, alpha, 1.3) / n.dot(b), ggxReflectance(n, b, a, alpha, 1.3) / n.dot(a), 1e-12);
     EXPECT_EQ(ggxReflectance(n, a, Imath::V3d(0.2, 0.0, -0.9).normalized(), alpha, 1.3), 0.0);
     EXPECT_EQ(ggxReflectance(n, Imath::V3d(0.2, 0.0, -0.9).normalized(), a, alpha, 1.3), 0.0);
+}
+
+TEST(Specular, TabulatedFresnelGivesTheSameLobe) {
+    std::mt19937 rng(5);
+    std::normal_distribution<double> normal;
+    const auto unitVector = [&] { return Imath::V3d(normal(rng), normal(rng), normal(rng)).normalized(); };
+    for (double eta : {1.0, 1.3, 1.8}) {
+        const FresnelTable table(eta);
+        for (int i = 0; i < 2000; ++i) {
+            const Imath::V3d n = unitVector(), v = unitVector(), l = unitVector();
+            const double exact = ggxReflectance(n, v, l, 0.12, eta), tabulated = ggxReflectance(n, v, l, 0.12, table);
+            ASSERT_NEAR(tabulated, exact, 1e-5 * std::max(1.0, exact)) << "eta " << eta;
+        }
+    }
 }
 
 TEST(Specular, ReflectionAndFootprint) {
