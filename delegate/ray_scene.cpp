@@ -28,8 +28,8 @@ RTCRay toEmbree(const Ray& r) {
     return ray;
 }
 
-// Ray `slot` of an Embree packet (RTCRay8 or the ray of an RTCRayHit8).
-void setPacketRay(RTCRay8& packet, std::size_t slot, const Ray& r) {
+// Ray `slot` of an Embree packet (RTCRay16 or the ray of an RTCRayHit16).
+void setPacketRay(RTCRay16& packet, std::size_t slot, const Ray& r) {
     packet.org_x[slot] = r.origin.x;
     packet.org_y[slot] = r.origin.y;
     packet.org_z[slot] = r.origin.z;
@@ -45,7 +45,7 @@ void setPacketRay(RTCRay8& packet, std::size_t slot, const Ray& r) {
 }
 
 // Embree's packet valid mask: -1 for the first `count` slots, 0 for the rest.
-struct alignas(32) PacketMask {
+struct alignas(64) PacketMask {
     int valid[RayScene::kPacketSize];
     explicit PacketMask(std::size_t count) {
         for (std::size_t i = 0; i < RayScene::kPacketSize; ++i) valid[i] = i < count ? -1 : 0;
@@ -192,12 +192,12 @@ void RayScene::occludedCoherent(std::span<const Ray> rays, std::span<std::uint8_
     requireCommitted("occluded");
     requireSizes(rays.size(), blocked.size());
     RTCIntersectContext context = coherentContext();
-    RTCRay8 packet;
+    RTCRay16 packet;
     for (std::size_t first = 0; first < rays.size(); first += kPacketSize) {
         const std::size_t n = std::min(kPacketSize, rays.size() - first);
         for (std::size_t i = 0; i < n; ++i) setPacketRay(packet, i, rays[first + i]);
         const PacketMask mask(n);
-        rtcOccluded8(mask.valid, scene_, &context, &packet);
+        rtcOccluded16(mask.valid, scene_, &context, &packet);
         for (std::size_t i = 0; i < n; ++i) blocked[first + i] = packet.tfar[i] < 0.0f ? 1 : 0;
     }
 }
@@ -206,7 +206,7 @@ void RayScene::intersectCoherent(std::span<const Ray> rays, std::span<std::optio
     requireCommitted("intersect");
     requireSizes(rays.size(), hits.size());
     RTCIntersectContext context = coherentContext();
-    RTCRayHit8 packet;
+    RTCRayHit16 packet;
     for (std::size_t first = 0; first < rays.size(); first += kPacketSize) {
         const std::size_t n = std::min(kPacketSize, rays.size() - first);
         for (std::size_t i = 0; i < n; ++i) {
@@ -215,7 +215,7 @@ void RayScene::intersectCoherent(std::span<const Ray> rays, std::span<std::optio
             packet.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
         }
         const PacketMask mask(n);
-        rtcIntersect8(mask.valid, scene_, &context, &packet);
+        rtcIntersect16(mask.valid, scene_, &context, &packet);
         for (std::size_t i = 0; i < n; ++i) {
             std::optional<RayHit>& hit = hits[first + i];
             hit.reset();

@@ -33,7 +33,7 @@ constexpr double kShadowOffset = 1e-4;
 // Pixels are shaded in blocks of kBlockWidth x kBlockHeight neighbours: their primary rays
 // are one Embree packet, their shadow rays toward one light another (RayScene's coherent
 // queries, about twice as fast as one ray at a time).
-constexpr int kBlockWidth = 4, kBlockHeight = 2;
+constexpr int kBlockWidth = 4, kBlockHeight = 4;
 constexpr int kBlockPixels = kBlockWidth * kBlockHeight;
 static_assert(kBlockPixels == int(RayScene::kPacketSize));
 
@@ -125,6 +125,12 @@ struct Block {
     std::array<Pixel, kBlockPixels> pixels;
 };
 
+// dome.radiance for any count, DomeLookup::kLanes at a time.
+void lookUp(const DomeLookup& dome, const Imath::V3f* directions, std::size_t count, int level, Imath::V3f* out) {
+    for (std::size_t first = 0; first < count; first += DomeLookup::kLanes)
+        dome.radiance(directions + first, std::min(DomeLookup::kLanes, count - first), level, out + first);
+}
+
 // The domes visible to the camera behind the pixels whose rays missed, one lookup call per
 // dome for the block.
 void background(const FrameContext& context, Block& block) {
@@ -141,7 +147,7 @@ void background(const FrameContext& context, Block& block) {
     std::array<Imath::V3f, kBlockPixels> radiance;
     for (std::size_t d = 0; d < context.domes.size(); ++d) {
         if (context.backgroundLevels[d] < 0) continue;
-        context.domes[d].radiance(directions.data(), count, context.backgroundLevels[d], radiance.data());
+        lookUp(context.domes[d], directions.data(), count, context.backgroundLevels[d], radiance.data());
         for (std::size_t k = 0; k < count; ++k) {
             Pixel& pixel = block.pixels[pixelOf[k]];
             pixel.background += radiance[k];
@@ -234,7 +240,7 @@ void domeReflections(const FrameContext& context, Block& block) {
         }
         first = i;
         for (const DomeLookup& dome : context.domes) {
-            dome.radiance(directions.data(), count, dome.levelFor(mesh->footprint), radiance.data());
+            lookUp(dome, directions.data(), count, dome.levelFor(mesh->footprint), radiance.data());
             for (std::size_t k = 0; k < count; ++k)
                 block.pixels[pixelOf[k]].specular += radiance[k] * float(block.surfaces[pixelOf[k]].fresnelReflectance);
         }
