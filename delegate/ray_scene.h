@@ -76,9 +76,9 @@ public:
 
     // Packets: the same answers as the one-ray queries, for rays traced kPacketSize at a time
     // (rtcOccluded16 / rtcIntersect16 over consecutive rays; any count). Throws opal::Error
-    // when the spans differ in size. 16 lanes suit Embree's AVX-512 kernels; on CPUs
-    // without them Embree splits the packets (the 720p benchmark frame: min 48 -> 44 ms
-    // against 8-ray packets on this AVX-512 machine).
+    // when the spans differ in size. Embree takes packets of 4, 8 or 16 on every ISA; 16
+    // suits its AVX-512 kernels (the 720p benchmark frame on this AVX-512 machine: min 48
+    // -> 44 ms against 8-ray packets).
     static constexpr std::size_t kPacketSize = 16;
     void occludedCoherent(std::span<const Ray> rays, std::span<std::uint8_t> blocked) const;
     void intersectCoherent(std::span<const Ray> rays, std::span<std::optional<RayHit>> hits) const;
