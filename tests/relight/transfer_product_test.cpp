@@ -157,8 +157,9 @@ TEST(TransferProduct, ValuesKeepElevenSignificantBitsAndDropOnlyTheNegligible) {
 TEST(TransferProduct, BestIsTheFastestKernelTheCpuHas) {
     const CompressedTransfer t = randomTransfer(32, 1);
     EXPECT_EQ(TransferProduct(t, 32).kernel(), kernels().back());
-    if (!TransferProduct::kernelAvailable(TransferProduct::Kernel::Avx2))
+    if (!TransferProduct::kernelAvailable(TransferProduct::Kernel::Avx2)) {
         EXPECT_THROW(TransferProduct(t, 32, TransferProduct::Kernel::Avx2), Error);
+    }
 }
 
 TEST(TransferProduct, RejectsInconsistentMatrices) {
