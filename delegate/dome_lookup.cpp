@@ -107,16 +107,16 @@ bool cpuHasSimdKernel() { return false; }
 
 }  // namespace
 
-DomeLookup::DomeLookup(std::shared_ptr<const LatLongMap> map, const Imath::M33d& worldToDome, const Imath::V3f& scale,
+DomeLookup::DomeLookup(std::shared_ptr<const LatLongMap> map, const Imath::M33d& domeFromWorld, const Imath::V3f& scale,
                        bool simd)
     : map_(std::move(map)), scale_(scale), simd_(simd && cpuHasSimdKernel()) {
     if (!map_) throw Error("dome lookup: no lat-long map");
     for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 3; ++c) toDome_[r * 3 + c] = float(worldToDome[r][c]);
+        for (int c = 0; c < 3; ++c) domeFromWorld_[r * 3 + c] = float(domeFromWorld[r][c]);
 }
 
 Imath::V3f DomeLookup::radiance(const Imath::V3f& d, int level) const {
-    const float* m = toDome_;
+    const float* m = domeFromWorld_;
     const Imath::V3f dome(d.x * m[0] + d.y * m[3] + d.z * m[6], d.x * m[1] + d.y * m[4] + d.z * m[7],
                           d.x * m[2] + d.y * m[5] + d.z * m[8]);
     const Imath::V2f uv = latLongCoordinates(dome);
@@ -129,7 +129,7 @@ void DomeLookup::radiance(const Imath::V3f* directions, std::size_t count, int l
     if (count == 0) return;
 #if OPAL_DOME_LOOKUP_AVX2
     if (simd_) {
-        radiancex8(toDome_, scale_, map_->levelPixels(level), directions, count, out);
+        radiancex8(domeFromWorld_, scale_, map_->levelPixels(level), directions, count, out);
         return;
     }
 #endif

@@ -2,7 +2,7 @@
 // directions, for the background behind the meshes and the specular layer's reflection,
 // a block of pixels at a time.
 //
-//   radiance(d) = scale * LatLongMap::sampleLevel(level, latLongCoordinates(d * worldToDome))
+//   radiance(d) = scale * LatLongMap::sampleLevel(level, latLongCoordinates(d * domeFromWorld))
 //
 // in float (lat_long_lookup.h's float atan2, the map's bilinear). The AVX2 + FMA kernel
 // (chosen at run time, as TransferProduct's) does eight directions at once with gathered
@@ -25,9 +25,9 @@ class DomeLookup {
 public:
     static constexpr std::size_t kLanes = 8;
 
-    // worldToDome: a rotation (row vectors); scale: color * intensity * 2^exposure.
+    // domeFromWorld: a rotation (row vectors); scale: color * intensity * 2^exposure.
     // simd: use the AVX2 + FMA kernel where the CPU has it (false: always portable).
-    DomeLookup(std::shared_ptr<const LatLongMap> map, const Imath::M33d& worldToDome, const Imath::V3f& scale,
+    DomeLookup(std::shared_ptr<const LatLongMap> map, const Imath::M33d& domeFromWorld, const Imath::V3f& scale,
                bool simd = true);
 
     bool usesSimd() const { return simd_; }
@@ -40,7 +40,7 @@ public:
 
 private:
     std::shared_ptr<const LatLongMap> map_;
-    float toDome_[9];  // row vectors: dome = direction * M, M[row * 3 + column]
+    float domeFromWorld_[9];  // row vectors: dome = direction * M, M[row * 3 + column]
     Imath::V3f scale_;
     bool simd_ = false;
 };

@@ -99,7 +99,7 @@ Imath::V3f LatLongMap::sample(double u, double v, double footprint) const {
 
 EnvironmentLight::EnvironmentLight(std::shared_ptr<const LatLongMap> map, const Imath::M44d& domeToWorld,
                                    const Rgb& scale)
-    : map_(std::move(map)), worldToDome_(rotationOf(domeToWorld, "dome light").transposed()), scale_(scale) {
+    : map_(std::move(map)), domeFromWorld_(rotationOf(domeToWorld, "dome light").transposed()), scale_(scale) {
     if (!map_) throw Error("dome light: no lat-long map");
     if (!std::isfinite(scale.x) || !std::isfinite(scale.y) || !std::isfinite(scale.z))
         throw Error("dome light: color * intensity * 2^exposure is not finite");
@@ -112,7 +112,7 @@ EnvironmentLight EnvironmentLight::fromDesc(std::shared_ptr<const LatLongMap> ma
 
 std::vector<float> EnvironmentLight::cubeRadiance(const CubeMapLayout& cube, const Imath::M44d& objectToWorld) const {
     // Object -> world -> dome, row vectors.
-    const Imath::M33d objectToDome = rotationOf(objectToWorld, "dome light: mesh") * worldToDome_;
+    const Imath::M33d domeFromObject = rotationOf(objectToWorld, "dome light: mesh") * domeFromWorld_;
     const std::uint32_t size = cube.faceSize();
     std::vector<float> radiance(std::size_t(cube.texels()) * 3);
     tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, cube.texels(), 64), [&](const auto& range) {
@@ -127,7 +127,7 @@ std::vector<float> EnvironmentLight::cubeRadiance(const CubeMapLayout& cube, con
                     const double t = 2.0 * (texel.v + (b + 0.5) / kSupersamples) / size - 1.0;
                     const double q = 1.0 + s * s + t * t;
                     const double w = 1.0 / (q * std::sqrt(q));  // solid angle per unit face area
-                    const Imath::V3d d = Imath::V3d(CubeMapLayout::faceDirection(texel.face, float(s), float(t))) * objectToDome;
+                    const Imath::V3d d = Imath::V3d(CubeMapLayout::faceDirection(texel.face, float(s), float(t))) * domeFromObject;
                     const Imath::V2d uv = LatLongMap::coordinates(d);
                     sum += Imath::V3d(map_->sample(uv.x, uv.y, footprint)) * w;
                     weights += w;

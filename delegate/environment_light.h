@@ -92,7 +92,7 @@ public:
 
 private:
     std::shared_ptr<const LatLongMap> map_;
-    Imath::M33d worldToDome_;
+    Imath::M33d domeFromWorld_;
     Rgb scale_;
 };
 

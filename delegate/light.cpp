@@ -65,7 +65,7 @@ void OpalLight::build(const hd::LightDesc& desc, std::shared_ptr<const LatLongMa
     try {
         if (kind_ == hd::LightKind::Dome) {
             auto environment = std::make_shared<const EnvironmentLight>(EnvironmentLight::fromDesc(map, desc));
-            worldToDome_ = rotationOf(desc.transform, "transform").transposed();
+            domeFromWorld_ = rotationOf(desc.transform, "transform").transposed();
             domeScale_ = desc.color * (desc.intensity * std::exp2(desc.exposure));
             environment_ = std::move(environment);
             map_ = std::move(map);

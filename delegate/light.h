@@ -38,7 +38,7 @@ public:
     const std::shared_ptr<const EnvironmentLight>& environment() const { return environment_; }
     const std::shared_ptr<const LatLongMap>& domeMap() const { return map_; }
     // A dome's world-to-dome rotation and its scale color * intensity * 2^exposure.
-    const Imath::M33d& worldToDome() const { return worldToDome_; }
+    const Imath::M33d& domeFromWorld() const { return domeFromWorld_; }
     const Rgb& domeScale() const { return domeScale_; }
 
 private:
@@ -52,7 +52,7 @@ private:
     std::optional<AnalyticLight> analytic_;
     std::shared_ptr<const LatLongMap> map_;
     std::shared_ptr<const EnvironmentLight> environment_;
-    Imath::M33d worldToDome_;
+    Imath::M33d domeFromWorld_;
     Rgb domeScale_{0.0, 0.0, 0.0};
 };
 

@@ -171,7 +171,7 @@ void OpalRenderDelegate::commitResources(hd::RenderIndex& index) {
             if (light->isDome()) {
                 source.environment = light->environment();
                 frame->domes.push_back(
-                    {light->domeMap(), light->worldToDome(), light->domeScale(), light->desc().visibleToCamera});
+                    {light->domeMap(), light->domeFromWorld(), light->domeScale(), light->desc().visibleToCamera});
             } else {
                 source.analytic = &*light->analytic();
                 frame->lights.push_back(*light->analytic());

@@ -74,7 +74,7 @@ struct FrameContext {
 FrameContext frameContext(const Frame& frame, const CameraView& camera, const RenderOptions& options) {
     FrameContext context{frame, options, camera, {}, {}, {}, 0.0, {}};
     for (const DomeView& dome : frame.domes) {
-        context.domes.emplace_back(dome.map, dome.worldToDome, Imath::V3f(dome.scale.x, dome.scale.y, dome.scale.z));
+        context.domes.emplace_back(dome.map, dome.domeFromWorld, Imath::V3f(dome.scale.x, dome.scale.y, dome.scale.z));
         context.backgroundLevels.push_back(dome.visibleToCamera ? context.domes.back().levelFor(camera.pixelAngle()) : -1);
     }
     if (!frame.rays) return context;

@@ -39,7 +39,7 @@ struct MeshShading {
 
 struct DomeView {
     std::shared_ptr<const LatLongMap> map;
-    Imath::M33d worldToDome;
+    Imath::M33d domeFromWorld;
     Rgb scale{1.0, 1.0, 1.0};  // color * intensity * 2^exposure
     bool visibleToCamera = true;
 };
