@@ -6,13 +6,11 @@
 // stored: at most 2^-28 of the largest each.
 #pragma once
 
+#include "schema/asset/array_codec.h"  // halfScaleExponent: the same e as the sidecar's half planes
+
 #include <cstdint>
-#include <span>
 
 namespace opal {
-
-// e with max |v| 2^-e in (2^14, 2^15]; 0 when every value is zero.
-int halfScaleExponent(std::span<const float> values);
 
 // The binary16 bits of v 2^-e when that is a normal half; false for zero, subnormal or
 // non-finite results (callers drop the first two and reject the last).

@@ -23,20 +23,20 @@ static_assert(std::endian::native == std::endian::little, "byte planes assume a 
 constexpr int kHalfTopExponent = 15;
 constexpr int kMinHalfScale = -160, kMaxHalfScale = 111;  // 65504 2^111 < FLT_MAX
 
+Imath::half toHalf(float v, int e) { return Imath::half(std::ldexp(v, -e)); }
+float fromHalf(Imath::half h, int e) { return std::ldexp(float(h), e); }
+
+}  // namespace
+
 int halfScaleExponent(std::span<const float> values) {
     float largest = 0.0f;
     for (float v : values) largest = std::max(largest, std::abs(v));
-    if (largest == 0.0f) return 0;
+    if (largest == 0.0f || !std::isfinite(largest)) return 0;
     int exponent = 0;
     const float mantissa = std::frexp(largest, &exponent);  // largest = mantissa 2^exponent, mantissa in [0.5, 1)
     const int ceilLog2 = mantissa == 0.5f ? exponent - 1 : exponent;
     return ceilLog2 - kHalfTopExponent;
 }
-
-Imath::half toHalf(float v, int e) { return Imath::half(std::ldexp(v, -e)); }
-float fromHalf(Imath::half h, int e) { return std::ldexp(float(h), e); }
-
-}  // namespace
 
 void writeHalfPlanes(ChunkSink& sink, std::span<const float> values) {
     const int e = halfScaleExponent(values);
