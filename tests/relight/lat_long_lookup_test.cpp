@@ -11,17 +11,6 @@
 namespace opal {
 namespace {
 
-TEST(FastAtan2, DoubleMatchesLibmToAFewUlps) {
-    std::mt19937 rng(1);
-    std::uniform_real_distribution<double> value(-10.0, 10.0);
-    for (int i = 0; i < 100000; ++i) {
-        const double y = value(rng), x = value(rng);
-        ASSERT_NEAR(fastAtan2(y, x), std::atan2(y, x), 1e-15) << y << ", " << x;
-    }
-    EXPECT_EQ(fastAtan2(0.0, -1.0), std::atan2(0.0, -1.0));
-    EXPECT_EQ(fastAtan2(-0.0, -1.0), std::atan2(-0.0, -1.0));
-}
-
 TEST(FastAtan2, FloatIsWithin2e5Radians) {
     double worst = 0.0;
     // Every direction of the circle at 1e-4 rad steps, and the axes exactly.
@@ -37,16 +26,13 @@ TEST(FastAtan2, FloatIsWithin2e5Radians) {
     EXPECT_EQ(fastAtan2(0.0f, 0.0f), 0.0f);
 }
 
-TEST(LatLongCoordinates, FloatAndDoubleAgreeWithTheMapsOrientation) {
+TEST(LatLongCoordinates, AgreeWithTheMapsOrientation) {
     std::mt19937 rng(2);
     std::normal_distribution<double> normal;
     for (int i = 0; i < 20000; ++i) {
         const Imath::V3d d(normal(rng), normal(rng), normal(rng));
         const Imath::V2d exact = LatLongMap::coordinates(d);
-        const Imath::V2d fast = latLongCoordinates(d);
         const Imath::V2f single = latLongCoordinates(Imath::V3f(d));
-        ASSERT_NEAR(fast.x, exact.x, 1e-14);
-        ASSERT_NEAR(fast.y, exact.y, 1e-14);
         // u wraps at the map's seam (-Z): compare on the circle.
         const double du = std::abs(single.x - exact.x);
         ASSERT_LT(std::min(du, 1.0 - du), 1e-5) << d;
