@@ -169,10 +169,9 @@ void TranslucentMesh::updateMaterial(const BoundMaterial& material, CommitStats&
 void TranslucentMesh::updateRadiance(bool reference, int primId, CommitStats& stats) {
     const OutputKey key{reference, momentsVersion_, materialVersion_, primId};
     if (shading_ && key == output_) return;
-    // The previous shading's buffers are reused when no frame holds it any more: a material
-    // edit then allocates nothing (fresh megabytes cost page faults on every edit).
-    std::shared_ptr<MeshShading> shading =
-        shading_ && shading_.use_count() == 1 ? std::move(shading_) : std::make_shared<MeshShading>();
+    // The per-vertex buffers are shared, not copied: radiance with the engine (which never
+    // changes a buffer a frame holds), irradiance across commits with the same lights and eta.
+    auto shading = std::make_shared<MeshShading>();
     shading->asset = desc_.asset;
     shading->normalToWorld = Imath::M33f(rotationOf(desc_.transform, "transform"));
     shading->specular = material_.specular;

@@ -99,7 +99,7 @@ private:
         bool operator==(const OutputKey&) const = default;
     };
     OutputKey output_;
-    std::shared_ptr<MeshShading> shading_;  // published as const; reused when no frame holds it
+    std::shared_ptr<const MeshShading> shading_;
     // E per vertex and what it was formed from (moments version, eta, reference or not).
     std::shared_ptr<const std::vector<float>> vertexIrradiance_;
     struct IrradianceKey {
