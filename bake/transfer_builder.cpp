@@ -330,8 +330,10 @@ std::vector<double> valueSteps(int minBin, const Step2Weights& weights) {
 }
 
 // Step 2 over all K matrices: one pass to histogram the weighted energies of every k, the
-// threshold for `fraction` of their sum, a second pass to keep what reaches it (each k's
-// step-1 rows are released as soon as it is done). *energyKept: the kept fraction.
+// threshold for `fraction` of their sum, a second pass to keep what reaches it. Each k's
+// step-1 rows are transposed to columns once, in the first pass, and released there; its
+// columns (no larger: the rows' zero padding is dropped) go after the second.
+// *energyKept: the kept fraction.
 CompressedTransfer compressSpatialDimension(std::vector<Step1Rows>& step1, const ChartLayout& layout,
                                             const ProfileBasis& basis, double fraction,
                                             ProgressSink* progress, const CancelToken& cancel,
@@ -342,10 +344,12 @@ CompressedTransfer compressSpatialDimension(std::vector<Step1Rows>& step1, const
         [&] { return ColumnScratch{std::vector<float>(n, 0.0f), {}}; });
     StageScope stage(progress, "transfer step 2 (CDF 9/7)", 2 * n * step1.size());
 
+    std::vector<Columns> columns(step1.size());
     EnergyHistogram all;
     for (std::size_t k = 0; k < step1.size(); ++k) {
-        const Columns cols = transpose(step1[k], n);
-        all.add(histogramOfColumns({cols, layout, weights, weights.basis[k]}, stage, cancel, scratch));
+        columns[k] = transpose(step1[k], n);
+        step1[k] = Step1Rows{};
+        all.add(histogramOfColumns({columns[k], layout, weights, weights.basis[k]}, stage, cancel, scratch));
     }
     const int minBin = thresholdBin(all, fraction);
     double kept = 0.0;
@@ -354,9 +358,9 @@ CompressedTransfer compressSpatialDimension(std::vector<Step1Rows>& step1, const
 
     CompressedTransfer out;
     for (std::size_t k = 0; k < step1.size(); ++k) {
-        const Columns cols = transpose(step1[k], n);
-        step1[k] = Step1Rows{};
-        out.perBasis.push_back(keptCoefficients({cols, layout, weights, weights.basis[k]}, minBin, stage, cancel, scratch));
+        out.perBasis.push_back(
+            keptCoefficients({columns[k], layout, weights, weights.basis[k]}, minBin, stage, cancel, scratch));
+        columns[k] = Columns{};
     }
     out.valueSteps = valueSteps(minBin, weights);
     return out;
