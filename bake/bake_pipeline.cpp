@@ -14,6 +14,7 @@
 #include "schema/asset/cube_map.h"
 #include "schema/asset/sidecar.h"
 #include "schema/asset/transfer_apply.h"
+#include "schema/usd/usda_writer.h"
 
 #include <Imath/ImathBox.h>
 
@@ -182,7 +183,6 @@ TranslucentAsset bakeAsset(const BakeOptions& options, ProgressSink* progress, c
     clock.lap("transfer");
 
     asset.environment = buildEnvironmentTransfer(asset.mesh, asset.samples, options.visibility, progress, cancel);
-    roundToStoredPrecision(asset);  // what the sidecar keeps, so the report measures it
     clock.lap("visibility");
 
     asset.bake.source = options.input;
@@ -193,6 +193,7 @@ TranslucentAsset bakeAsset(const BakeOptions& options, ProgressSink* progress, c
 
     {
         StageScope stage(progress, "measure transfer error", 1);
+        roundToStoredPrecision(asset);  // what the sidecar keeps, so the report measures it
         r.transferRelRmse = measureTransferError(asset, options.seed);
     }
     clock.lap("measure");
@@ -210,10 +211,10 @@ void writeBakedAsset(const std::filesystem::path& stem, const TranslucentAsset& 
     std::filesystem::path usda = stem, sidecar = stem;
     usda += ".usda";
     sidecar += ".opal";
-    if (asset.name != assetNameFrom(asset.name))  // before anything is written
-        throw Error("asset name '" + asset.name + "' is not a prim name");
+    // The layer is formed (and the asset's name checked) before anything is written.
+    const usda::Layer layer = assetToLayer(asset, sidecar.filename().string());
     writeSidecar(sidecar, asset);
-    writeAssetLayer(usda, asset, sidecar.filename().string());
+    usda::writeUsdaFile(usda, layer);
     if (report) {
         report->sidecarBytes = std::filesystem::file_size(sidecar);
         report->peakRssBytes = peakRssBytes();
