@@ -4,13 +4,14 @@
 //     mantissa bytes), then plane 1, 2, 3 (sign and exponent): the exponent bytes of
 //     nearby values are alike, which zstd exploits. On a synthetic transfer matrix this
 //     cut the compressed values from 94% to 86% of their raw size (zstd level 3).
-//   half planes: where 11 significant bits are plenty (the compressed transfer and the
-//     environment transfer, whose coefficients are themselves approximations), a float
-//     array is stored as a power-of-two scale 2^e and the IEEE binary16 bits of v 2^-e,
-//     as two byte planes. e puts the largest magnitude in (2^14, 2^15], so every value
-//     down to 2^-28 of the largest keeps a relative rounding error <= 2^-11; smaller ones
-//     keep an absolute error <= 2^-39 of the largest (half subnormals). Half the bytes of
-//     float planes, and on a 65,536-sample bunny's transfer 44% of their compressed size.
+//   half planes: where 11 significant bits are plenty (the environment transfer, whose
+//     coefficients are themselves approximations), a float array is stored as a
+//     power-of-two scale 2^e and the IEEE binary16 bits of v 2^-e, as two byte planes. e
+//     puts the largest magnitude in (2^14, 2^15], so every value down to 2^-28 of the
+//     largest keeps a relative rounding error <= 2^-11; smaller ones keep an absolute
+//     error <= 2^-39 of the largest (half subnormals). Half the bytes of float planes.
+//     (The transfer's values, once stored this way, now go on a weighted quantization
+//     grid as varints: transfer_value_grid.h.)
 //   varints: signed integers (quantized transfer values, transfer_value_grid.h) as zigzag
 //     LEB128, most of them one byte, behind their total byte count.
 //   row deltas: CSR column indices are stored per row as differences to the previous
