@@ -83,12 +83,7 @@ VertexWeights readVertexWeights(ChunkSource src, std::uint64_t samples, std::uin
 std::vector<float> readMatrixValues(ChunkSource& src, const SparseMatrix& m, double step,
                                     const TransferValueGrid& grid, const std::string& what) {
     if (step == 0.0) return readFloatPlanes(src, m.columns.size(), what);
-    const std::vector<std::int64_t> q = readVarints(src, m.columns.size(), what);
-    std::vector<float> values(q.size());
-    for (std::uint32_t p = 0; p < m.rows; ++p)
-        for (std::uint64_t e = m.rowOffsets[p]; e < m.rowOffsets[p + 1]; ++e)
-            values[e] = grid.value(q[e], step, p, m.columns[e]);
-    return values;
+    return grid.values(m, readVarints(src, m.columns.size(), what), step);
 }
 
 SparseMatrix readMatrix(ChunkSource& src, std::uint64_t samples, std::size_t k, const TransferValueGrid& grid,

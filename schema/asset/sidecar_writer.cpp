@@ -65,11 +65,7 @@ void writeVertexWeights(ChunkSink& sink, const VertexWeights& w) {
 void writeMatrixValues(ChunkSink& sink, const SparseMatrix& m, double step, const TransferValueGrid& grid) {
     sink.writeF64(step);
     if (step == 0.0) return writeFloatPlanes(sink, m.values);
-    std::vector<std::int64_t> q(m.values.size());
-    for (std::uint32_t p = 0; p < m.rows; ++p)
-        for (std::uint64_t e = m.rowOffsets[p]; e < m.rowOffsets[p + 1]; ++e)
-            q[e] = grid.quantize(m.values[e], step, p, m.columns[e]);
-    writeVarints(sink, q);
+    writeVarints(sink, grid.quantize(m, step));
 }
 
 void writeMatrix(ChunkSink& sink, const SparseMatrix& m, double step, const TransferValueGrid& grid) {

@@ -22,6 +22,7 @@
 #include "schema/wavelet/sparse.h"
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace opal {
@@ -39,6 +40,10 @@ public:
     std::int64_t quantize(float c, double step, std::uint32_t p, std::uint32_t j) const;
     // c = q step / weight, as a float.
     float value(std::int64_t q, double step, std::uint32_t p, std::uint32_t j) const;
+    // quantize for every entry of m, in m's entry order; step > 0.
+    std::vector<std::int64_t> quantize(const SparseMatrix& m, double step) const;
+    // value for every entry of m (its shape; its values are not read) from q in entry order.
+    std::vector<float> values(const SparseMatrix& m, std::span<const std::int64_t> q, double step) const;
     // Every value of m replaced by value(quantize(.)); nothing changes for step 0.
     // Idempotent. m's shape must match the layout (unchecked beyond p, j < cells).
     void round(SparseMatrix& m, double step) const;
