@@ -40,6 +40,16 @@ SamplesMm toMillimetres(std::span<const SurfaceSample> samples, double unitsPerM
     return mm;
 }
 
+// lambda_k / lambda_1 per basis function, clamped at 0 (all 1 for a zero spectrum): how
+// much T_k matters in L = sum_k s_k T_k E, for both steps' weighting.
+std::vector<double> relativeEigenvalues(const ProfileBasis& basis) {
+    const std::span<const double> lambda = basis.eigenvalues();
+    std::vector<double> relative(lambda.size(), 1.0);
+    if (lambda[0] > 0.0)
+        for (std::size_t k = 0; k < lambda.size(); ++k) relative[k] = std::max(lambda[k], 0.0) / lambda[0];
+    return relative;
+}
+
 // How many Haar coefficients a row of each T_k keeps: keepFraction of the row on average
 // over k (so keepFraction x N x K per output sample in all), split in proportion to
 // (lambda_k / lambda_1)^(1/4): T_k contributes to L = sum_k s_k T_k E with s_k of RMS
@@ -48,10 +58,8 @@ SamplesMm toMillimetres(std::span<const SurfaceSample> samples, double unitsPerM
 // error with an equal split / this one: bunny 1.06 / 0.87%, Spot 0.82 / 0.67%, candle
 // 0.72 / 0.57%, sidecars within 8%; exponent 1/2 starves the middle k (bunny 1.51%).
 std::vector<std::uint32_t> step1Budgets(double keepFraction, std::size_t n, const ProfileBasis& basis) {
-    const std::span<const double> lambda = basis.eigenvalues();
-    std::vector<double> share(lambda.size(), 1.0);
-    if (lambda[0] > 0.0)
-        for (std::size_t k = 0; k < lambda.size(); ++k) share[k] = std::pow(std::max(lambda[k], 0.0) / lambda[0], 0.25);
+    std::vector<double> share = relativeEigenvalues(basis);
+    for (double& s : share) s = std::pow(s, 0.25);
     // Water-filling: a matrix's share is capped at the whole row (N) and what it cannot take
     // goes to the others in the same proportions, so keep 1 keeps every row whole.
     const double rowLength = double(n);
@@ -176,10 +184,7 @@ struct Step2Weights {
 };
 
 Step2Weights step2Weights(const ChartLayout& layout, const ProfileBasis& basis) {
-    Step2Weights w{cdf97SynthesisNormsSquared(layout.size()), haarSupportCells(layout.size()), {}};
-    const std::span<const double> lambda = basis.eigenvalues();
-    for (double l : lambda) w.basis.push_back(lambda[0] > 0.0 ? std::max(l, 0.0) / lambda[0] : 1.0);
-    return w;
+    return {cdf97SynthesisNormsSquared(layout.size()), haarSupportCells(layout.size()), relativeEigenvalues(basis)};
 }
 
 // Energies are binned by the top bits of their float representation: for positive
