@@ -26,6 +26,35 @@ constexpr int kMinHalfScale = -160, kMaxHalfScale = 111;  // 65504 2^111 < FLT_M
 Imath::half toHalf(float v, int e) { return Imath::half(std::ldexp(v, -e)); }
 float fromHalf(Imath::half h, int e) { return std::ldexp(float(h), e); }
 
+// Byte planes of n Word-sized values, bitsOf(i) giving value i's bits: byte 0 of every
+// value, then byte 1, ... in blocks of kBlockValues (bitsOf runs once per value and plane,
+// so that no whole copy of the array is made).
+template <typename Word, typename BitsOf>
+void writeBytePlanes(ChunkSink& sink, std::size_t n, BitsOf&& bitsOf) {
+    std::vector<std::byte> block(kBlockValues);
+    for (std::size_t plane = 0; plane < sizeof(Word); ++plane) {
+        for (std::size_t start = 0; start < n; start += kBlockValues) {
+            const std::size_t count = std::min(kBlockValues, n - start);
+            for (std::size_t i = 0; i < count; ++i) block[i] = std::byte((Word(bitsOf(start + i)) >> (8 * plane)) & 0xff);
+            sink.write(std::span(block).first(count));
+        }
+    }
+}
+
+// The inverse, into out's bytes (byte k of a value is plane k on this little-endian host).
+template <typename T>
+void readBytePlanes(ChunkSource& source, std::span<T> out) {
+    const std::span<std::byte> bytes = std::as_writable_bytes(out);
+    std::vector<std::byte> block(kBlockValues);
+    for (std::size_t plane = 0; plane < sizeof(T); ++plane) {
+        for (std::size_t start = 0; start < out.size(); start += kBlockValues) {
+            const std::size_t count = std::min(kBlockValues, out.size() - start);
+            source.read(std::span(block).first(count));
+            for (std::size_t i = 0; i < count; ++i) bytes[sizeof(T) * (start + i) + plane] = block[i];
+        }
+    }
+}
+
 }  // namespace
 
 int halfScaleExponent(std::span<const float> values) {
@@ -41,15 +70,7 @@ int halfScaleExponent(std::span<const float> values) {
 void writeHalfPlanes(ChunkSink& sink, std::span<const float> values) {
     const int e = halfScaleExponent(values);
     sink.writeU32(std::bit_cast<std::uint32_t>(std::int32_t(e)));
-    std::vector<std::byte> block(kBlockValues);
-    for (int plane = 0; plane < 2; ++plane) {
-        for (std::size_t start = 0; start < values.size(); start += kBlockValues) {
-            const std::size_t n = std::min(kBlockValues, values.size() - start);
-            for (std::size_t i = 0; i < n; ++i)
-                block[i] = std::byte((toHalf(values[start + i], e).bits() >> (8 * plane)) & 0xff);
-            sink.write(std::span(block).first(n));
-        }
-    }
+    writeBytePlanes<std::uint16_t>(sink, values.size(), [&](std::size_t i) { return toHalf(values[i], e).bits(); });
 }
 
 std::vector<float> readHalfPlanes(ChunkSource& source, std::uint64_t count, std::string_view what) {
@@ -59,14 +80,7 @@ std::vector<float> readHalfPlanes(ChunkSource& source, std::uint64_t count, std:
                     std::to_string(kMinHalfScale) + ", " + std::to_string(kMaxHalfScale) + "]");
     source.requireBytes(count, sizeof(std::uint16_t), what);
     std::vector<std::uint16_t> bits(static_cast<std::size_t>(count), 0);
-    std::vector<std::byte> block(kBlockValues);
-    for (int plane = 0; plane < 2; ++plane) {
-        for (std::size_t start = 0; start < bits.size(); start += kBlockValues) {
-            const std::size_t n = std::min(kBlockValues, bits.size() - start);
-            source.read(std::span(block).first(n));
-            for (std::size_t i = 0; i < n; ++i) bits[start + i] |= std::uint16_t(std::uint16_t(block[i]) << (8 * plane));
-        }
-    }
+    readBytePlanes(source, std::span(bits));
     std::vector<float> values(bits.size());
     for (std::size_t i = 0; i < bits.size(); ++i) {
         Imath::half h;
@@ -146,29 +160,13 @@ std::vector<std::int64_t> readVarints(ChunkSource& source, std::uint64_t count, 
 }
 
 void writeFloatPlanes(ChunkSink& sink, std::span<const float> values) {
-    auto bytes = std::as_bytes(values);
-    std::vector<std::byte> block(kBlockValues);
-    for (std::size_t plane = 0; plane < 4; ++plane) {
-        for (std::size_t start = 0; start < values.size(); start += kBlockValues) {
-            std::size_t n = std::min(kBlockValues, values.size() - start);
-            for (std::size_t i = 0; i < n; ++i) block[i] = bytes[4 * (start + i) + plane];
-            sink.write(std::span(block).first(n));
-        }
-    }
+    writeBytePlanes<std::uint32_t>(sink, values.size(), [&](std::size_t i) { return std::bit_cast<std::uint32_t>(values[i]); });
 }
 
 std::vector<float> readFloatPlanes(ChunkSource& source, std::uint64_t count, std::string_view what) {
     source.requireBytes(count, sizeof(float), what);
     std::vector<float> values(static_cast<std::size_t>(count));
-    auto bytes = std::as_writable_bytes(std::span(values));
-    std::vector<std::byte> block(kBlockValues);
-    for (std::size_t plane = 0; plane < 4; ++plane) {
-        for (std::size_t start = 0; start < values.size(); start += kBlockValues) {
-            std::size_t n = std::min(kBlockValues, values.size() - start);
-            source.read(std::span(block).first(n));
-            for (std::size_t i = 0; i < n; ++i) bytes[4 * (start + i) + plane] = block[i];
-        }
-    }
+    readBytePlanes(source, std::span(values));
     return values;
 }
 
