@@ -87,13 +87,14 @@ RowMatrix normalizedProfiles(const RadialGrid& grid, const std::vector<DipoleCoe
 
 void requireValidChannel(const DipoleCoefficients& c) {
     const bool valid = std::isfinite(c.sigmaSPrime) && c.sigmaSPrime > 0.0 && std::isfinite(c.sigmaA) &&
-                       c.sigmaA > 0.0 && std::isfinite(c.eta) && c.eta >= 1.0;
+                       c.sigmaA > 0.0;
     if (!valid) {
         std::ostringstream out;
         out << "ProfileBasis::coefficients: sigmaSPrime = " << c.sigmaSPrime << ", sigmaA = " << c.sigmaA
-            << ", eta = " << c.eta << ": coefficients must be positive and finite and eta >= 1";
+            << ": coefficients must be positive and finite";
         throw Error(out.str());
     }
+    requireDipoleEta(c.eta, "ProfileBasis::coefficients");
 }
 
 void requireFiniteNonNegative(const std::vector<double>& v, const char* name, bool positive = false) {

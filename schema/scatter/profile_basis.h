@@ -54,7 +54,7 @@ public:
     // opal::Error for a negative or NaN radius.
     void diskIntegrals(double radius, std::span<double> out) const;
     // s_k(sigma) = sum_l w_l R_d(r_l, sigma) b_k(r_l): K numbers per channel. Throws
-    // opal::Error for non-positive or non-finite coefficients or eta < 1.
+    // opal::Error for non-positive or non-finite coefficients or eta outside [1, 3].
     std::vector<double> coefficients(const DipoleCoefficients& c) const;
     std::array<std::vector<double>, 3> project(const Material& m) const;
     // sum_k s_k b_k(r).
