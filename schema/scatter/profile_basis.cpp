@@ -40,6 +40,7 @@ constexpr double kCoreFraction = 0.5;
 
 struct FitPlan {
     int K = 0;
+    double zMin = 0.0;  // the depth 1/sigma_t' of the range's narrowest profile, mm
     double rMax = 0.0;
     double r0 = 0.0;
     int radialSamples = 0;
@@ -51,6 +52,7 @@ FitPlan planFit(const ProfileBasisSettings& s) {
     FitPlan plan;
     plan.K = s.K;
     const double zMin = 1.0 / (s.range.sigmaSPrimeMax + s.range.sigmaAMax);
+    plan.zMin = zMin;
     plan.rMax = s.rMax == 0.0 ? kDefaultScaleRatio * zMin : s.rMax;
     plan.radialSamples = s.radialSamples == 0 ? kDefaultRadialSamples : s.radialSamples;
     plan.trainingMaterials = s.trainingMaterials == 0 ? kDefaultTrainingMaterials : s.trainingMaterials;
@@ -69,6 +71,19 @@ FitPlan planFit(const ProfileBasisSettings& s) {
                     " must lie in [1, min(radialSamples, trainingMaterials)] = [1, " +
                     std::to_string(std::min(plan.radialSamples, plan.trainingMaterials)) + "]");
     return plan;
+}
+
+// Over a radius range much shorter than the profiles' own scale every training profile is
+// nearly flat, the training matrix has fewer than K independent rows, and b_k = U_k^T P / S_k
+// divides by a zero singular value. Named here instead of surfacing as a NaN basis value.
+[[noreturn]] void throwTooFewComponents(const FitPlan& plan, int fitted) {
+    std::ostringstream out;
+    out << "ProfileBasis::fit: the training profiles over [0, " << plan.rMax << " mm] have only " << fitted
+        << " independent components, fewer than K = " << plan.K << ": rMax is " << plan.rMax / plan.zMin
+        << " times the narrowest profile's depth z_min = " << plan.zMin
+        << " mm, too short a range for the profiles to differ; a larger rMax (is the object's size in "
+           "millimetres right?) or a smaller K fits";
+    throw Error(out.str());
 }
 
 // Row j: R_d(r_l, sigma_j) / ||R_d(., sigma_j)||_w, the per-row normalized training profile.
@@ -152,6 +167,7 @@ ProfileBasis ProfileBasis::fit(const ProfileBasisSettings& settings) {
         basis.row(k).cwiseAbs().maxCoeff(&peak);
         const double sign = basis(k, peak) < 0.0 ? -1.0 : 1.0;  // deterministic: largest sample positive
         basis.row(k) *= sign / singular[k];
+        if (!(singular[k] > 0.0) || !basis.row(k).allFinite()) throwTooFewComponents(plan, k);
         eigenvalues[k] = singular[k] * singular[k] / plan.trainingMaterials;
     }
     std::vector<double> values(basis.data(), basis.data() + basis.size());

@@ -32,7 +32,9 @@ public:
                  std::vector<double> eigenvalues, EditableRange range);
 
     // Weighted PCA (Eigen SVD) over materials sampled log-uniformly in settings.range.
-    // Deterministic for given settings. Throws opal::Error naming the bad setting.
+    // Deterministic for given settings. Throws opal::Error naming the bad setting, or
+    // saying how many components the training profiles have when rMax is too short for
+    // K of them (a few times z_min or less).
     static ProfileBasis fit(const ProfileBasisSettings& settings);
 
     int K() const { return static_cast<int>(eigenvalues_.size()); }
