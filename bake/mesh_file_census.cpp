@@ -56,7 +56,8 @@ std::optional<MeshFileCensus> censusPly(const std::filesystem::path& path) {
         words >> keyword >> name;
         if (keyword == "format") ascii = name == "ascii";
         if (keyword != "element" || !(words >> count)) continue;
-        declaredElements += count;
+        // Saturating: a declared count near 2^64 must not wrap into a small one.
+        declaredElements = count > UINT64_MAX - declaredElements ? UINT64_MAX : declaredElements + count;
         if (name != "face" && name != "tristrips") continue;
         if (!census) census = MeshFileCensus{};
         const std::string declared = "'element " + name + " " + std::to_string(count) + "'";

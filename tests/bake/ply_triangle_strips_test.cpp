@@ -264,6 +264,12 @@ std::string stripFile(const std::string& elements, const std::string& data) {
     return header("ascii", 4, "", elements) + kFourVertices + data;
 }
 
+std::string littleInts(std::initializer_list<std::int32_t> values) {
+    std::string out;
+    for (std::int32_t v : values) put(out, v, false);
+    return out;
+}
+
 TEST(PlyTriangleStrips, MalformedStripFilesNameTheFileElementAndItem) {
     const ScratchDir dir;
     const std::string strips = "element tristrips 1\nproperty list int int vertex_indices\n";
@@ -281,7 +287,9 @@ TEST(PlyTriangleStrips, MalformedStripFilesNameTheFileElementAndItem) {
          {"format.ply:2:", "unknown format 'ebcdic'"}},
         {"huge.ply", header("binary_little_endian", 4000000000u, "", strips) + std::string(64, '\0'),
          {"huge.ply", "'element vertex 4000000000'"}},
-        {"empty.ply", stripFile("element nothing 18446744073709551615\n" + strips, "2 0 1\n"),
+        // 2^64 - 1 records of nothing (binary: no line count for the census to check).
+        {"empty.ply", header("binary_little_endian", 4, "", "element nothing 18446744073709551615\n" + strips) +
+                          std::string(48, '\0') + littleInts({2, 0, 1}),
          {"empty.ply", "no strip holds a triangle"}},
         // 2^63 records of two bytes: a size that wraps to 0 in 64 bits.
         {"wrap.ply",
@@ -296,6 +304,15 @@ TEST(PlyTriangleStrips, MalformedStripFilesNameTheFileElementAndItem) {
         test::writeText(dir / c.name, c.contents);
         expectMentions(importError(dir / c.name), c.expected);
     }
+}
+
+TEST(MeshImportPlausibility, ACountNearTwoToThe64DoesNotHideATruncatedAsciiFile) {
+    // 4 vertices + 1 face + (2^64 - 5) others wrap to 0 declared elements in 64 bits.
+    const ScratchDir dir;
+    test::writeText(dir / "wrap.ply", header("ascii", 4, "", "element face 1\nproperty list uchar int vertex_indices\n"
+                                                             "element other 18446744073709551611\nproperty uchar a\n") +
+                                          kFourVertices + "3 0 1 2\n");
+    expectMentions(importError(dir / "wrap.ply"), {"wrap.ply", "truncated or malformed"});
 }
 
 TEST(MeshImportPlausibility, AMeshWithZeroAreaIsRefusedWithTheFile) {
