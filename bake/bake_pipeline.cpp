@@ -102,14 +102,30 @@ Material defaultMaterial(const BakeOptions& options, const EditableRange& range,
 }
 
 // The basis reaches across the whole object: r_max is the bounding-box diagonal in mm.
-ProfileBasis fitBasis(const BakeOptions& options, const EditableRange& range, const RenderMesh& mesh) {
+// Its errors name the asset and its size, since the mesh (or its units) is their cause.
+ProfileBasis fitBasis(const BakeOptions& options, const std::string& assetName, const EditableRange& range,
+                      const RenderMesh& mesh) {
     const Imath::Box3f box = bounds(mesh);
+    const double diagonal = double((Imath::V3d(box.max) - Imath::V3d(box.min)).length()) / options.unitsPerMm;
+    std::ostringstream where;
+    where << "asset '" << assetName << "' (" << options.input << "): ";
+    if (box.isEmpty() || !std::isfinite(diagonal) || !(diagonal > 0.0)) {
+        where << "the mesh's bounding-box diagonal is " << (box.isEmpty() ? 0.0 : diagonal)
+              << " mm, so the profile basis's radius range is empty";
+        throw Error(where.str());
+    }
     ProfileBasisSettings settings;
     settings.K = options.basisCount;
     settings.range = range;
-    settings.rMax = double((box.max - box.min).length()) / options.unitsPerMm;
+    settings.rMax = diagonal;
     settings.seed = options.seed;
-    return ProfileBasis::fit(settings);
+    try {
+        return ProfileBasis::fit(settings);
+    } catch (const Error& e) {
+        where << "bounding-box diagonal " << diagonal << " mm at --units-per-mm " << options.unitsPerMm << ": "
+              << e.what();
+        throw Error(where.str());
+    }
 }
 
 std::string assetName(const std::string& input) {
@@ -176,7 +192,7 @@ TranslucentAsset bakeAsset(const BakeOptions& options, ProgressSink* progress, c
 
     {
         StageScope stage(progress, "fit profile basis", 1);
-        asset.basis = fitBasis(options, asset.range, asset.mesh);
+        asset.basis = fitBasis(options, asset.name, asset.range, asset.mesh);
     }
     clock.lap("basis");
     cancel.throwIfRequested();

@@ -35,7 +35,7 @@ std::uint64_t countKeywordLines(const std::filesystem::path& path, std::string_v
 
 std::optional<MeshFileCensus> censusObj(const std::filesystem::path& path) {
     std::uint64_t faces = countKeywordLines(path, "f");
-    return MeshFileCensus{faces, std::to_string(faces) + " 'f' lines", ""};
+    return MeshFileCensus{faces, 0, std::to_string(faces) + " 'f' lines", ""};
 }
 
 // ASCII PLY has one line per element (vertex, face, ...) after the header.
@@ -56,8 +56,13 @@ std::optional<MeshFileCensus> censusPly(const std::filesystem::path& path) {
         words >> keyword >> name;
         if (keyword == "format") ascii = name == "ascii";
         if (keyword != "element" || !(words >> count)) continue;
-        declaredElements += count;
-        if (name == "face") census = MeshFileCensus{count, "the header's 'element face " + std::to_string(count) + "'", ""};
+        // Saturating: a declared count near 2^64 must not wrap into a small one.
+        declaredElements = count > UINT64_MAX - declaredElements ? UINT64_MAX : declaredElements + count;
+        if (name != "face" && name != "tristrips") continue;
+        if (!census) census = MeshFileCensus{};
+        const std::string declared = "'element " + name + " " + std::to_string(count) + "'";
+        census->evidence += (census->evidence.empty() ? "the header's " : " and ") + declared;
+        (name == "face" ? census->faces : census->triangleStrips) = count;
     }
     if (!census || !headerEnded || !ascii) return census;
     std::uint64_t dataLines = 0;
@@ -85,7 +90,7 @@ std::optional<MeshFileCensus> censusStl(const std::filesystem::path& path) {
         bool saysSolid = std::memcmp(header, "solid", 5) == 0;
         std::uintmax_t expectedSize = 84 + 50 * std::uintmax_t(triangles);
         if (in && (size == expectedSize || !saysSolid)) {
-            MeshFileCensus census{triangles, "the binary header's count of " + std::to_string(triangles) + " triangles", ""};
+            MeshFileCensus census{triangles, 0, "the binary header's count of " + std::to_string(triangles) + " triangles", ""};
             if (size != expectedSize) {
                 census.inconsistency = "the binary header declares " + std::to_string(triangles) + " triangles (" +
                                        std::to_string(expectedSize) + " bytes) but the file has " +
@@ -95,7 +100,7 @@ std::optional<MeshFileCensus> censusStl(const std::filesystem::path& path) {
         }
     }
     std::uint64_t facets = countKeywordLines(path, "facet");
-    return MeshFileCensus{facets, std::to_string(facets) + " 'facet' lines", ""};
+    return MeshFileCensus{facets, 0, std::to_string(facets) + " 'facet' lines", ""};
 }
 
 }  // namespace

@@ -1,6 +1,8 @@
 #include "bake/mesh_import.h"
 
 #include "bake/mesh_file_census.h"
+#include "bake/ply_header.h"
+#include "bake/ply_triangle_strips.h"
 #include "bake/usda_mesh_import.h"
 #include "schema/error.h"
 
@@ -11,7 +13,9 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cmath>
 #include <fstream>
+#include <iterator>
 
 namespace opal {
 namespace {
@@ -128,9 +132,62 @@ void checkPlausible(const std::filesystem::path& path, const std::optional<MeshF
     }
 }
 
+// The polygons' total area (each fanned into triangles from its first corner), in square
+// file units; corners outside the positions are skipped (mesh validation reports them).
+double totalArea(const ControlMesh& mesh) {
+    double area = 0.0;
+    std::size_t start = 0;
+    const auto at = [&](std::int32_t i) { return Imath::V3d(mesh.positions[std::size_t(i)]); };
+    const auto valid = [&](std::int32_t i) { return i >= 0 && std::size_t(i) < mesh.positions.size(); };
+    for (std::int32_t count : mesh.faceVertexCounts) {
+        if (count < 0 || start + std::size_t(count) > mesh.faceVertexIndices.size()) break;
+        const std::int32_t* corners = mesh.faceVertexIndices.data() + start;
+        for (std::int32_t c = 2; c < count; ++c) {
+            if (!valid(corners[0]) || !valid(corners[c - 1]) || !valid(corners[c])) continue;
+            area += 0.5 * (at(corners[c - 1]) - at(corners[0])).cross(at(corners[c]) - at(corners[0])).length();
+        }
+        start += std::size_t(count);
+    }
+    return area;
+}
+
+// A mesh whose faces cover no area has nothing to scatter light in: its size (and with it
+// the profile basis's radius range) is zero. Non-finite positions are left to mesh
+// validation, which names the first one.
+void checkArea(const std::filesystem::path& path, const ControlMesh& mesh) {
+    const double area = totalArea(mesh);
+    if (area == 0.0)
+        throw Error(path.string() + ": the mesh's " + std::to_string(mesh.faceCount()) + " faces have zero total area (" +
+                    std::to_string(mesh.positions.size()) +
+                    " vertices, all on one point or line); the file is probably malformed or was misread");
+}
+
+std::string readWholeFile(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    if (in.bad()) throw Error(path.string() + ": cannot read the file");
+    return bytes;
+}
+
+// Assimp returns a single face for a PLY stored as triangle strips: such files are read
+// here instead (bake/ply_triangle_strips.h).
+ImportedMesh importTriangleStrips(const std::filesystem::path& path, const MeshFileCensus& census) {
+    const std::string bytes = readWholeFile(path);
+    const PlyHeader header = parsePlyHeader(bytes, path.string());
+    PlyStripMesh strips = readPlyTriangleStrips(path, bytes, header);
+    if (strips.stripTriangles == 0)
+        throw Error(path.string() + ": the file stores its faces as triangle strips (" + census.evidence +
+                    ") but no strip holds a triangle (" + std::to_string(strips.degenerate) +
+                    " degenerate); the file is probably malformed");
+    ImportedMesh result{std::move(strips.mesh), {}, std::nullopt, std::nullopt};
+    checkPlausible(path, census, result.mesh, 0);
+    return result;
+}
+
 ImportedMesh importWithAssimp(const std::filesystem::path& path) {
     std::optional<MeshFileCensus> census = takeMeshFileCensus(path);
     checkConsistent(path, census);
+    if (census && census->triangleStrips > 0) return importTriangleStrips(path, *census);
     Assimp::Importer importer;
     // No aiProcess_Triangulate: Catmull-Clark needs the quads as authored.
     const aiScene* scene = importer.ReadFile(path.string(), aiProcess_JoinIdenticalVertices);
@@ -174,10 +231,12 @@ std::string supportedMeshExtensions() {
 ImportedMesh importMesh(const std::filesystem::path& path) {
     checkReadable(path);
     std::string ext = lowercaseExtension(path);
-    if (readByAssimp(ext)) return importWithAssimp(path);
-    if (ext == kUsdaExtension) return importUsdaMesh(path);
-    throw Error(path.string() + ": unsupported mesh format '" + ext + "'; supported: " +
-                supportedMeshExtensions());
+    if (!readByAssimp(ext) && ext != kUsdaExtension)
+        throw Error(path.string() + ": unsupported mesh format '" + ext + "'; supported: " +
+                    supportedMeshExtensions());
+    ImportedMesh imported = ext == kUsdaExtension ? importUsdaMesh(path) : importWithAssimp(path);
+    checkArea(path, imported.mesh);
+    return imported;
 }
 
 }  // namespace opal

@@ -26,9 +26,11 @@ struct ImportedMesh {
 };
 
 // Reads .obj, .ply, .gltf, .glb, .stl and .usda (by extension, case-insensitive). Every
-// mesh in the file is merged into one, with its node (prim) transforms applied. Throws opal::Error naming
-// the path for a missing or unreadable file, an unsupported extension, a reader failure,
-// or a result that is implausible for the file (fewer faces than the file holds, none).
+// mesh in the file is merged into one, with its node (prim) transforms applied. PLY
+// triangle strips are decoded into triangles (bake/ply_triangle_strips.h). Throws
+// opal::Error naming the path for a missing or unreadable file, an unsupported extension,
+// a reader failure, or a result that is implausible for the file (fewer faces than the
+// file holds, none, triangle strips that hold no triangle, zero total area).
 ImportedMesh importMesh(const std::filesystem::path& path);
 
 // The extensions importMesh accepts, for help texts: ".obj .ply .gltf .glb .stl .usda".

@@ -61,7 +61,7 @@ int main(int argc, char** argv) {
         ->check(CLI::PositiveNumber)
         ->capture_default_str();
     app.add_option("--range", range,
-                   "editable range: 'presets' (default) or sigmaS=MIN:MAX,sigmaA=MIN:MAX,eta=MIN:MAX (mm^-1)");
+                   "editable range: 'presets' (default) or sigmaS=MIN:MAX,sigmaA=MIN:MAX,eta=MIN:MAX (mm^-1; eta within [1, 3])");
     app.add_option("--material", options.material, "default material preset")->capture_default_str();
     app.add_option("--basis", options.basisCount, "PCA basis functions K")->check(CLI::Range(1, 64))->capture_default_str();
     app.add_option("--keep", options.transfer.keepFraction, "step 1: fraction of Haar coefficients kept per row")

@@ -1,6 +1,7 @@
 #include "examples/scene/scene_material.h"
 
 #include "examples/scene/xformable.h"
+#include "schema/scatter/dipole.h"
 #include "schema/error.h"
 
 namespace opal::scene {
@@ -9,6 +10,8 @@ namespace {
 using usda::types::Color3f;
 
 const Bounds AlbedoBounds{0.0, 1.0, true, true};
+// The dipole's own range, so that the scene is refused where it is written.
+const Bounds EtaBounds = Bounds::closed(kDipoleEtaMin, kDipoleEtaMax);
 
 // One way of giving the subsurface coefficients: its attributes, as authored.
 struct Parameterization {
@@ -76,7 +79,7 @@ Material subsurface(PrimReader& reader) {
         {"opal:sigmaSPrime + opal:sigmaA", {reader.find("opal:sigmaSPrime", {Color3f}), reader.find("opal:sigmaA", {Color3f})}},
         {"opal:albedo + opal:meanFreePath", {reader.find("opal:albedo", {Color3f}), reader.find("opal:meanFreePath", {Color3f})}},
     };
-    const std::optional<double> eta = reader.real("opal:eta", usda::types::Float, Bounds::atLeast(1.0));
+    const std::optional<double> eta = reader.real("opal:eta", usda::types::Float, EtaBounds);
     const Parameterization& chosen = chooseParameterization(reader, choices);
     Material material;
     if (&chosen == &choices[0]) {

@@ -5,17 +5,12 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <sstream>
 #include <string>
 
 namespace opal {
 
 namespace {
-
-// A = (1 + F_dr) / (1 - F_dr): the boundary mismatch term (DESIGN.md section 2).
-double boundaryMismatch(double eta) {
-    const double fdr = fresnelDiffuseReflectance(eta);
-    return (1.0 + fdr) / (1.0 - fdr);
-}
 
 // One pole of the dipole: z (sigma_tr + 1/d) e^{-sigma_tr d} / d^2 with d = sqrt(r^2 + z^2).
 double poleTerm(double r, double z, double sigmaTr) {
@@ -45,6 +40,21 @@ Poles poles(const DipoleCoefficients& c) {
 }
 
 }  // namespace
+
+void requireDipoleEta(double eta, std::string_view context) {
+    if (eta >= kDipoleEtaMin && eta <= kDipoleEtaMax) return;  // false for NaN
+    std::ostringstream out;
+    out << context << ": eta = " << eta << " lies outside [" << kDipoleEtaMin << ", " << kDipoleEtaMax
+        << "], the range where the dipole's boundary term A(eta) is valid (its diffuse Fresnel fit reaches 1 "
+           "near eta = 3.85, where A diverges)";
+    throw Error(out.str());
+}
+
+// A = (1 + F_dr) / (1 - F_dr): the boundary mismatch term (DESIGN.md section 2).
+double boundaryMismatch(double eta) {
+    const double fdr = fresnelDiffuseReflectance(eta);
+    return (1.0 + fdr) / (1.0 - fdr);
+}
 
 // DESIGN.md section 2: F_dr(eta), Egan and Hilgeman's polynomial fit.
 double fresnelDiffuseReflectance(double eta) {

@@ -50,11 +50,6 @@ void requirePositiveFinite(std::string_view context, std::string_view parameter,
         throw Error(describe(context, parameter, channel, value) + " must be positive and finite");
 }
 
-void requireEta(std::string_view context, double eta) {
-    if (!std::isfinite(eta) || !(eta >= 1.0))
-        throw Error(describe(context, "eta", -1, eta) + " must be finite and >= 1");
-}
-
 bool equalsIgnoringCase(std::string_view a, std::string_view b) {
     return std::ranges::equal(a, b, [](char x, char y) {
         return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
@@ -124,11 +119,11 @@ void validateMaterial(const Material& m, std::string_view context) {
         requirePositiveFinite(context, "sigmaSPrime", c, m.sigmaSPrime[c]);
         requirePositiveFinite(context, "sigmaA", c, m.sigmaA[c]);
     }
-    requireEta(context, m.eta);
+    requireDipoleEta(m.eta, context);
 }
 
 Material fromArtist(const ArtistMaterial& artist) {
-    requireEta("fromArtist", artist.eta);
+    requireDipoleEta(artist.eta, "fromArtist");
     Material material;
     material.eta = artist.eta;
     for (int c = 0; c < 3; ++c) channelFromArtist(artist, c, material);
@@ -171,8 +166,9 @@ void EditableRange::validate(std::string_view context) const {
     };
     requireInterval("sigmaSPrime", sigmaSPrimeMin, sigmaSPrimeMax);
     requireInterval("sigmaA", sigmaAMin, sigmaAMax);
+    requireDipoleEta(etaMin, std::string(context) + " (editable range eta minimum)");
+    requireDipoleEta(etaMax, std::string(context) + " (editable range eta maximum)");
     requireInterval("eta", etaMin, etaMax);
-    requireEta(context, etaMin);
 }
 
 bool EditableRange::contains(const Material& m) const {
@@ -190,6 +186,9 @@ Material EditableRange::clamp(const Material& m, std::vector<std::string>* warni
         out.sigmaSPrime[c] = clampValue(m.sigmaSPrime[c], sigmaSPrimeMin, sigmaSPrimeMax, "sigmaSPrime", c, warnings);
         out.sigmaA[c] = clampValue(m.sigmaA[c], sigmaAMin, sigmaAMax, "sigmaA", c, warnings);
     }
+    // Inside the dipole's valid eta range a value outside the editable one is clamped
+    // with a warning; outside the valid range it is an error.
+    requireDipoleEta(m.eta, "EditableRange::clamp");
     out.eta = clampValue(m.eta, etaMin, etaMax, "eta", -1, warnings);
     return out;
 }

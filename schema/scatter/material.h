@@ -40,7 +40,8 @@ struct ArtistMaterial {
 };
 
 // Inverts the closed-form total reflectance numerically. Throws opal::Error naming the
-// parameter and channel for albedo outside (0, 1), non-positive or non-finite input.
+// parameter and channel for albedo outside (0, 1), non-positive or non-finite input, and
+// for eta outside the dipole's range (requireDipoleEta); toArtist as validateMaterial.
 Material fromArtist(const ArtistMaterial& artist);
 ArtistMaterial toArtist(const Material& material);
 
@@ -54,16 +55,18 @@ struct EditableRange {
     static EditableRange coveringPresets();
 
     // Throws opal::Error (prefixed with context) unless every interval is finite, positive
-    // and ordered and etaMin >= 1.
+    // and ordered and both eta bounds lie in the dipole's range (requireDipoleEta).
     void validate(std::string_view context) const;
     bool contains(const Material& m) const;
     // Clamps every coefficient into the range; each clamped value adds a warning naming
-    // the parameter, the channel, the value and the bound. Non-finite input throws.
+    // the parameter, the channel, the value and the bound. Non-finite input, and an eta
+    // outside the dipole's range (requireDipoleEta), throw.
     // warnings may be null.
     Material clamp(const Material& m, std::vector<std::string>* warnings) const;
 };
 
-// Throws opal::Error when a coefficient is non-finite or non-positive, or eta < 1.
+// Throws opal::Error when a coefficient is non-finite or non-positive, or eta lies
+// outside the dipole's range (requireDipoleEta).
 void validateMaterial(const Material& m, std::string_view context);
 
 }  // namespace opal

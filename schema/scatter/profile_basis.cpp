@@ -40,6 +40,7 @@ constexpr double kCoreFraction = 0.5;
 
 struct FitPlan {
     int K = 0;
+    double zMin = 0.0;  // the depth 1/sigma_t' of the range's narrowest profile, mm
     double rMax = 0.0;
     double r0 = 0.0;
     int radialSamples = 0;
@@ -51,6 +52,7 @@ FitPlan planFit(const ProfileBasisSettings& s) {
     FitPlan plan;
     plan.K = s.K;
     const double zMin = 1.0 / (s.range.sigmaSPrimeMax + s.range.sigmaAMax);
+    plan.zMin = zMin;
     plan.rMax = s.rMax == 0.0 ? kDefaultScaleRatio * zMin : s.rMax;
     plan.radialSamples = s.radialSamples == 0 ? kDefaultRadialSamples : s.radialSamples;
     plan.trainingMaterials = s.trainingMaterials == 0 ? kDefaultTrainingMaterials : s.trainingMaterials;
@@ -71,6 +73,19 @@ FitPlan planFit(const ProfileBasisSettings& s) {
     return plan;
 }
 
+// Over a radius range much shorter than the profiles' own scale every training profile is
+// nearly flat, the training matrix has fewer than K independent rows, and b_k = U_k^T P / S_k
+// divides by a zero singular value. Named here instead of surfacing as a NaN basis value.
+[[noreturn]] void throwTooFewComponents(const FitPlan& plan, int fitted) {
+    std::ostringstream out;
+    out << "ProfileBasis::fit: the training profiles over [0, " << plan.rMax << " mm] have only " << fitted
+        << " independent components, fewer than K = " << plan.K << ": rMax is " << plan.rMax / plan.zMin
+        << " times the narrowest profile's depth z_min = " << plan.zMin
+        << " mm, too short a range for the profiles to differ; a larger rMax (is the object's size in "
+           "millimetres right?) or a smaller K fits";
+    throw Error(out.str());
+}
+
 // Row j: R_d(r_l, sigma_j) / ||R_d(., sigma_j)||_w, the per-row normalized training profile.
 RowMatrix normalizedProfiles(const RadialGrid& grid, const std::vector<DipoleCoefficients>& training) {
     const Eigen::Index L = static_cast<Eigen::Index>(grid.radii.size());
@@ -87,13 +102,14 @@ RowMatrix normalizedProfiles(const RadialGrid& grid, const std::vector<DipoleCoe
 
 void requireValidChannel(const DipoleCoefficients& c) {
     const bool valid = std::isfinite(c.sigmaSPrime) && c.sigmaSPrime > 0.0 && std::isfinite(c.sigmaA) &&
-                       c.sigmaA > 0.0 && std::isfinite(c.eta) && c.eta >= 1.0;
+                       c.sigmaA > 0.0;
     if (!valid) {
         std::ostringstream out;
         out << "ProfileBasis::coefficients: sigmaSPrime = " << c.sigmaSPrime << ", sigmaA = " << c.sigmaA
-            << ", eta = " << c.eta << ": coefficients must be positive and finite and eta >= 1";
+            << ": coefficients must be positive and finite";
         throw Error(out.str());
     }
+    requireDipoleEta(c.eta, "ProfileBasis::coefficients");
 }
 
 void requireFiniteNonNegative(const std::vector<double>& v, const char* name, bool positive = false) {
@@ -151,6 +167,7 @@ ProfileBasis ProfileBasis::fit(const ProfileBasisSettings& settings) {
         basis.row(k).cwiseAbs().maxCoeff(&peak);
         const double sign = basis(k, peak) < 0.0 ? -1.0 : 1.0;  // deterministic: largest sample positive
         basis.row(k) *= sign / singular[k];
+        if (!(singular[k] > 0.0) || !basis.row(k).allFinite()) throwTooFewComponents(plan, k);
         eigenvalues[k] = singular[k] * singular[k] / plan.trainingMaterials;
     }
     std::vector<double> values(basis.data(), basis.data() + basis.size());

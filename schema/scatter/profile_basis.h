@@ -32,7 +32,9 @@ public:
                  std::vector<double> eigenvalues, EditableRange range);
 
     // Weighted PCA (Eigen SVD) over materials sampled log-uniformly in settings.range.
-    // Deterministic for given settings. Throws opal::Error naming the bad setting.
+    // Deterministic for given settings. Throws opal::Error naming the bad setting, or
+    // saying how many components the training profiles have when rMax is too short for
+    // K of them (a few times z_min or less).
     static ProfileBasis fit(const ProfileBasisSettings& settings);
 
     int K() const { return static_cast<int>(eigenvalues_.size()); }
@@ -54,7 +56,7 @@ public:
     // opal::Error for a negative or NaN radius.
     void diskIntegrals(double radius, std::span<double> out) const;
     // s_k(sigma) = sum_l w_l R_d(r_l, sigma) b_k(r_l): K numbers per channel. Throws
-    // opal::Error for non-positive or non-finite coefficients or eta < 1.
+    // opal::Error for non-positive or non-finite coefficients or eta outside [1, 3].
     std::vector<double> coefficients(const DipoleCoefficients& c) const;
     std::array<std::vector<double>, 3> project(const Material& m) const;
     // sum_k s_k b_k(r).

@@ -356,17 +356,24 @@ TEST_F(ExactCandle, SamplesCoverTheCandleLimitSurfaceWithOutwardNormals) {
     EXPECT_LT(neighbour, 0.3 * shuffled) << "random pairs are " << shuffled << " spacings apart";
 }
 
+// A bake of a mesh file at a fixed level with a small environment transfer.
+BakeOptions fileBakeOptions(const std::filesystem::path& input, std::uint32_t level, std::uint64_t samples,
+                            std::uint32_t envTerms) {
+    BakeOptions options;
+    options.input = input.string();
+    options.level = level;
+    options.samples = samples;
+    options.visibility.cubeFaceSize = 8;
+    options.visibility.terms = envTerms;
+    return options;
+}
+
 TEST(BakePipeline, SphereSamplesAreaNormalsAndChartsAgainstClosedForms) {
     // An icosphere of radius 25 mm read from an OBJ (Loop subdivision, the importer path).
     const test::ScratchDir dir;
     const ControlMesh control = test::icosphere(2, 25.0f);
     test::writeText(dir / "sphere.obj", test::objText(control));
-    BakeOptions options;
-    options.input = (dir / "sphere.obj").string();
-    options.level = 1;
-    options.samples = 1024;
-    options.visibility.cubeFaceSize = 8;
-    options.visibility.terms = 32;
+    const BakeOptions options = fileBakeOptions(dir / "sphere.obj", 1, 1024, 32);
     BakeReport report;
     const TranslucentAsset a = bakeAsset(options, nullptr, CancelToken{}, &report);
     EXPECT_EQ(a.bake.scheme, "loop");
@@ -385,6 +392,23 @@ TEST(BakePipeline, SphereSamplesAreaNormalsAndChartsAgainstClosedForms) {
     const auto [neighbour, shuffled] = gridNeighbourDistance(a);
     EXPECT_LT(neighbour, 3.0);
     EXPECT_LT(neighbour, 0.3 * shuffled) << "random pairs are " << shuffled << " spacings apart";
+}
+
+TEST(BakePipeline, AMeshTooSmallForTheBasisIsRefusedNamingTheAssetAndItsSize) {
+    // Radius 0.01 mm: a diagonal of 0.035 mm, shorter than the profiles' own scale, so the
+    // basis cannot hold K = 16 functions (an object authored in metres, baked as mm).
+    const test::ScratchDir dir;
+    test::writeText(dir / "tiny.obj", test::objText(test::icosphere(1, 0.01f)));
+    const BakeOptions options = fileBakeOptions(dir / "tiny.obj", 0, 256, 16);
+    try {
+        bakeAsset(options, nullptr, CancelToken{}, nullptr);
+        ADD_FAILURE() << "no error";
+    } catch (const Error& e) {
+        const std::string what = e.what();
+        for (const char* part : {"asset 'tiny'", "tiny.obj", "bounding-box diagonal 0.03", "--units-per-mm 1",
+                                 "independent components", "K = 16"})
+            EXPECT_NE(what.find(part), std::string::npos) << what << " lacks " << part;
+    }
 }
 
 // ---- the written asset --------------------------------------------------------------

@@ -142,6 +142,11 @@ TEST(OpalBakeCli, BadArgumentsNameTheProblem) {
         {{"--material", "unobtainium"}, {1, 2}, {"--material", "unobtainium", "marble"}},
         {{"--env-res", "24"}, {1, 2}, {"--env-res", "power of two"}},
         {{"--range", "sigmaS=2:1"}, {2}, {"--range", "sigmaSPrime [2, 1]"}},
+        // eta outside the dipole's range [1, 3] (schema/scatter/dipole.h), either bound.
+        {{"--range", "eta=1.2:3.9"}, {2}, {"--range", "eta = 3.9", "[1, 3]"}},
+        {{"--range", "eta=1.2:10"}, {2}, {"--range", "eta = 10", "[1, 3]"}},
+        {{"--range", "eta=1.2:nan"}, {2}, {"--range", "eta = nan", "[1, 3]"}},
+        {{"--range", "eta=0.5:1.6"}, {2}, {"--range", "eta = 0.5", "[1, 3]"}},
         {{"--no-such-option"}, {2}, {"--no-such-option"}},
     };
     for (const BadArgs& c : cases) {

@@ -45,6 +45,24 @@ TEST(ReferenceGather, SumsTheDipoleOverSamplesInMillimetres) {
     EXPECT_THROW(referenceGather(asset, m, std::span(e).first(5)), Error);
 }
 
+TEST(ReferenceGather, RefusesEtaOutsideTheDipolesRange) {
+    TranslucentAsset asset;
+    asset.layout = ChartLayout{2, 0};
+    asset.samples = {{{0, 0, 0}, {0, 1, 0}, 0.3f}, {{1.5f, 0, 0}, {0, 1, 0}, 0.2f}};
+    const std::vector<float> e(6, 1.0f);
+    for (double eta : {3.9, 10.0, std::nan(""), 0.5}) {
+        const Material m{{1.0, 2.0, 0.5}, {0.1, 0.01, 0.3}, eta};
+        try {
+            referenceGather(asset, m, e);
+            ADD_FAILURE() << "no error for eta " << eta;
+        } catch (const Error& error) {
+            EXPECT_NE(std::string(error.what()).find("[1, 3]"), std::string::npos) << error.what();
+        }
+    }
+    const Material atTheBound{{1.0, 2.0, 0.5}, {0.1, 0.01, 0.3}, kDipoleEtaMax};
+    for (float value : referenceGather(asset, atTheBound, e)) EXPECT_TRUE(std::isfinite(value) && value > 0.0f);
+}
+
 // 2 pi integral_0^1 F_t(eta, mu) mu dmu: the irradiance of a uniform unit sky (midpoint rule).
 double skyIrradiance(double eta) {
     double sum = 0.0;

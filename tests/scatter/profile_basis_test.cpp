@@ -300,6 +300,26 @@ TEST(ProfileBasis, BadSettingsAndStoredDataAreRejected) {
     EXPECT_NO_THROW(ProfileBasis({0.0, 1.0}, {0.0, 1.0}, {1.0, 2.0}, {1.0}, range));
 }
 
+TEST(ProfileBasis, ARadiusRangeTooShortForKComponentsIsNamedNotANaN) {
+    // Over 0.05 mm every default-range profile (z_min = 0.09 mm) is nearly flat: the 2048
+    // training profiles have fewer than 16 independent components and S_k reaches 0.
+    ProfileBasisSettings s;
+    s.K = 16;
+    s.rMax = 0.05;
+    try {
+        ProfileBasis::fit(s);
+        ADD_FAILURE() << "no error";
+    } catch (const Error& e) {
+        const std::string what = e.what();
+        for (const char* part : {"[0, 0.05 mm]", "only 13 independent components", "K = 16", "z_min = 0.09"})
+            EXPECT_NE(what.find(part), std::string::npos) << what << " lacks " << part;
+        EXPECT_EQ(what.find("not finite"), std::string::npos) << what;
+    }
+    s.K = 4;  // the same range holds 4 components
+    const ProfileBasis basis = ProfileBasis::fit(s);
+    for (double v : basis.values()) EXPECT_TRUE(std::isfinite(v));
+}
+
 TEST(ProfileBasis, EvaluateInterpolatesAndRejectsBadArguments) {
     const ProfileBasis basis({0.0, 1.0, 3.0}, {0.0, 1.0, 1.0}, {2.0, 4.0, 0.0}, {1.0},
                              EditableRange::coveringPresets());
