@@ -13,6 +13,7 @@
 #include "bake/vertex_weights.h"
 #include "schema/asset/asset_layer.h"
 #include "schema/asset/cube_map.h"
+#include "schema/asset/point_range.h"
 #include "schema/asset/sidecar.h"
 #include "schema/asset/transfer_apply.h"
 #include "schema/usd/crash_point.h"
@@ -66,6 +67,8 @@ void reportFileUnits(const BakeOptions& options, std::optional<double> metersPer
 ImportedMesh loadControlMesh(const BakeOptions& options, std::vector<std::string>* warnings) {
     if (options.input == kBuiltinCandle) return ImportedMesh{makeCandle(), {}, std::nullopt, std::nullopt};
     ImportedMesh imported = importMesh(options.input);
+    checkPointRange(imported.mesh.positions, options.unitsPerMm, imported.mesh.source + " (at --units-per-mm)",
+                    "vertex");
     warnings->insert(warnings->end(), imported.warnings.begin(), imported.warnings.end());
     reportFileUnits(options, imported.metersPerUnit, warnings);
     return imported;

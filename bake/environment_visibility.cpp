@@ -1,6 +1,6 @@
 #include "bake/environment_visibility.h"
 
-#include "bake/occlusion_scene.h"
+#include "raytrace/ray_scene.h"
 #include "schema/asset/cube_map.h"
 #include "schema/scatter/fresnel_moments.h"
 #include "schema/wavelet/haar.h"
@@ -34,7 +34,7 @@ CubeDirections cubeDirections(const CubeMapLayout& cube) {
 }
 
 // The transport vectors of one sample, m after m: vectors[m * texels + t].
-void transportVectors(const SurfaceSample& s, const OcclusionScene& scene, const CubeDirections& cube,
+void transportVectors(const SurfaceSample& s, const RayScene& scene, const CubeDirections& cube,
                       std::uint32_t terms, float offset, std::vector<float>& vectors) {
     const std::size_t texels = cube.direction.size();
     std::fill(vectors.begin(), vectors.end(), 0.0f);
@@ -42,7 +42,7 @@ void transportVectors(const SurfaceSample& s, const OcclusionScene& scene, const
     for (std::size_t t = 0; t < texels; ++t) {
         const float mu = s.normal.dot(cube.direction[t]);
         if (mu <= 0.0f) continue;
-        if (scene.occluded(origin, cube.direction[t], 0.0f, std::numeric_limits<float>::infinity())) continue;
+        if (scene.occluded(Ray(origin, cube.direction[t], 0.0f, std::numeric_limits<float>::infinity()))) continue;
         for (std::uint32_t m = 0; m < terms; ++m)
             vectors[m * texels + t] = mu * float(shiftedLegendre(int(m), mu)) * cube.solidAngle[t];
     }
@@ -62,7 +62,9 @@ EnvironmentTransfer buildEnvironmentTransfer(const RenderMesh& mesh, std::span<c
     const std::uint32_t kept = std::min<std::uint32_t>(settings.terms, std::uint32_t(texels));
     if (kept == 0) throw Error("environment visibility: --env-terms must be at least 1");
     const CubeDirections directions = cubeDirections(cube);
-    const OcclusionScene scene(mesh);
+    RayScene scene(RayScene::BuildQuality::High);
+    scene.addMesh(mesh, Imath::M44d());
+    scene.commit();
     const float offset = 1e-4f * scene.extent();
 
     const std::uint32_t M = settings.fresnelTerms;

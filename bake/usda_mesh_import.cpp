@@ -1,6 +1,7 @@
 #include "bake/usda_mesh_import.h"
 
 #include "bake/usda_xform_ops.h"
+#include "schema/asset/point_range.h"
 #include "schema/error.h"
 #include "schema/usd/usda_reader.h"
 
@@ -166,7 +167,6 @@ std::vector<std::string> ignoredTags(const Prim& prim) {
     return tags;
 }
 
-bool isFiniteFloat(double x) { return std::abs(x) <= double(std::numeric_limits<float>::max()); }  // false for NaN
 
 std::optional<SubdivisionScheme> schemeOfToken(const std::string& token) {
     if (token == "catmullClark") return SubdivisionScheme::CatmullClark;
@@ -178,7 +178,10 @@ std::optional<SubdivisionScheme> schemeOfToken(const std::string& token) {
 // Walks the layer's prims and merges every Mesh prim USD would render.
 class MeshCollector {
 public:
-    explicit MeshCollector(std::string file) : file_(std::move(file)) { mesh_.source = file_; }
+    // unitsPerMm: the layer's (0.001 / metersPerUnit), for the range every point must lie in.
+    MeshCollector(std::string file, double unitsPerMm) : file_(std::move(file)), unitsPerMm_(unitsPerMm) {
+        mesh_.source = file_;
+    }
 
     void visitAll(const std::vector<Prim>& prims, const Inherited& parent) {
         for (const Prim& p : prims) visit(p, parent);
@@ -267,11 +270,16 @@ private:
         }
         for (std::size_t v = 0; v < points.size(); ++v) {
             const Imath::V3d world = Imath::V3d(points[v][0], points[v][1], points[v][2]) * toWorld;
-            if (!isFiniteFloat(world.x) || !isFiniteFloat(world.y) || !isFiniteFloat(world.z)) {
+            const double largest = std::max({std::abs(world.x), std::abs(world.y), std::abs(world.z)});
+            if (!(largest <= kMaxDistanceMm * unitsPerMm_)) {  // point_range.h; false for NaN
                 std::ostringstream s;
                 s << "point " << v << " (" << points[v][0] << ", " << points[v][1] << ", " << points[v][2]
-                  << ") is not a finite float after the prim's transform: (" << world.x << ", " << world.y << ", "
-                  << world.z << ")";
+                  << ") is (" << world.x << ", " << world.y << ", " << world.z << ") after the prim's transform: ";
+                if (std::isfinite(largest))
+                    s << largest / unitsPerMm_ << " mm from the origin at the layer's metersPerUnit "
+                      << 0.001 / unitsPerMm_ << ", beyond the 1e9 mm (1,000 km) an asset may span";
+                else
+                    s << "not finite";
                 fail(locationOf(prim, "points"), path, "points", s.str());
             }
             mesh_.positions.emplace_back(world);
@@ -317,6 +325,7 @@ private:
     }
 
     std::string file_;
+    double unitsPerMm_ = 1.0;
     ControlMesh mesh_;
     std::vector<std::string> warnings_;
     std::vector<std::string> meshes_;       // paths of the Mesh prims merged, in layer order
@@ -340,7 +349,8 @@ ImportedMesh importUsdaMesh(const std::filesystem::path& path) {
         s << path.string() << ": metersPerUnit is " << *metersPerUnit << "; it must be positive";
         throw Error(s.str());
     }
-    MeshCollector collector(path.string());
+    // USD's fallback metersPerUnit is 0.01 (centimetres).
+    MeshCollector collector(path.string(), 0.001 / metersPerUnit.value_or(0.01));
     collector.visitAll(layer.rootPrims, Inherited{});
     return collector.finish(metersPerUnit);
 }

@@ -16,7 +16,7 @@
 
 #include "delegate/environment_light.h"
 #include "delegate/mesh_irradiance.h"
-#include "delegate/ray_scene.h"
+#include "raytrace/ray_scene.h"
 
 #include <cstdint>
 #include <memory>

@@ -1,7 +1,8 @@
 #include "delegate/analytic_light.h"
 
 #include "delegate/fresnel_response.h"
-#include "delegate/ray_scene.h"
+#include "delegate/light_emission.h"
+#include "raytrace/ray_scene.h"
 #include "schema/error.h"
 #include "schema/scatter/dipole.h"
 #include "schema/scatter/fresnel_moments.h"
@@ -35,18 +36,11 @@ double axisScale(const Imath::M44d& m) {
     return sum / 3.0;
 }
 
-// L_e = color * intensity * 2^exposure (UsdLux LightAPI).
-Rgb emittedRadiance(const hd::LightDesc& d) { return d.color * (d.intensity * std::exp2(d.exposure)); }
-
 void requireFinite(const hd::LightDesc& d) {
-    const bool ok = std::isfinite(d.intensity) && std::isfinite(d.exposure) && std::isfinite(d.radius) &&
-                    d.radius >= 0.0 && std::isfinite(d.angle) && d.angle >= 0.0 && std::isfinite(d.color.x) &&
-                    std::isfinite(d.color.y) && std::isfinite(d.color.z) &&
+    const bool ok = std::isfinite(d.radius) && d.radius >= 0.0 && std::isfinite(d.angle) && d.angle >= 0.0 &&
                     (!d.shapingConeAngle || std::isfinite(*d.shapingConeAngle)) &&
                     std::isfinite(d.shapingConeSoftness);
-    if (!ok)
-        throw Error("analytic light: intensity, exposure, color, radius, angle and shaping must be finite "
-                    "(radius and angle non-negative)");
+    if (!ok) throw Error("analytic light: radius, angle and shaping must be finite (radius and angle non-negative)");
 }
 
 }  // namespace
@@ -103,7 +97,10 @@ std::optional<Incidence> AnalyticLight::incidence(const Imath::V3d& point) const
     const Imath::V3d direction = toLight / d;
     const double shape = shaping(-direction);
     if (shape <= 0.0) return std::nullopt;
-    return Incidence{direction, power_ * (shape / (d * d)), d - radius_};  // E_perp = I / d^2
+    // E_perp = I / d^2, saturated (light_emission.h): unbounded as a point light nears the point.
+    Rgb e = power_ * (shape / (d * d));
+    for (int c = 0; c < 3; ++c) e[c] = std::min(e[c], kMaxSampleIrradiance);
+    return Incidence{direction, e, d - radius_};
 }
 
 std::vector<LightArrival> lightArrivals(const AnalyticLight& light, const PlacedSamples& samples,

@@ -10,7 +10,7 @@
 #pragma once
 
 #include "delegate/hd/prim.h"
-#include "delegate/ray_scene.h"
+#include "raytrace/ray_scene.h"
 
 #include <Imath/ImathMatrix.h>
 #include <Imath/ImathVec.h>

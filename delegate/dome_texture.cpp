@@ -1,9 +1,12 @@
 #include "delegate/dome_texture.h"
 
+#include "delegate/light_emission.h"
 #include "schema/error.h"
 
 #include <OpenImageIO/imageio.h>
 
+#include <algorithm>
+#include <string>
 #include <vector>
 
 namespace opal {
@@ -21,13 +24,23 @@ std::shared_ptr<const LatLongMap> readLatLongMap(const std::string& file, const 
 
     std::vector<float> rgb(std::size_t(width) * height * 3);
     for (std::size_t p = 0; p < std::size_t(width) * height; ++p)
-        for (int c = 0; c < 3; ++c) rgb[3 * p + c] = pixels[p * channels + std::size_t(channels >= 3 ? c : 0)];
+        for (int c = 0; c < 3; ++c) {
+            const float v = pixels[p * channels + std::size_t(channels >= 3 ? c : 0)];
+            if (!(v >= 0.0f && v <= kMaxEmittedRadiance))
+                fail("texel (" + std::to_string(p % std::size_t(width)) + ", " + std::to_string(p / std::size_t(width)) +
+                     ") channel " + std::to_string(c) + " is " + std::to_string(v) +
+                     ": a dome's radiance must be finite, non-negative and at most 1e20");
+            rgb[3 * p + c] = v;
+        }
     try {
         OCIO::PackedImageDesc image(rgb.data(), width, height, 3);
         toWorking->getDefaultCPUProcessor()->apply(image);
     } catch (const OCIO::Exception& e) {
         fail(std::string("color conversion: ") + e.what());
     }
+    // A colour outside the working space's gamut converts to a negative component: clipped
+    // to zero (the working space cannot emit it; delegate/COLOR.md).
+    for (float& v : rgb) v = std::max(v, 0.0f);
     std::shared_ptr<const LatLongMap> map;
     try {
         map = std::make_shared<const LatLongMap>(width, height, std::move(rgb));

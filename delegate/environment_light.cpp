@@ -1,5 +1,7 @@
 #include "delegate/environment_light.h"
 
+#include "delegate/light_emission.h"
+
 #include "schema/error.h"
 #include "schema/wavelet/haar.h"
 
@@ -24,10 +26,13 @@ LatLongMap::LatLongMap(int width, int height, std::vector<float> rgb) {
     if (width <= 0 || height <= 0 || rgb.size() != std::size_t(width) * std::size_t(height) * 3)
         throw Error("lat-long map: " + std::to_string(rgb.size()) + " floats do not make a " + std::to_string(width) +
                     " x " + std::to_string(height) + " RGB image");
-    for (std::size_t i = 0; i < rgb.size(); ++i)
-        if (!std::isfinite(rgb[i]))
+    for (std::size_t i = 0; i < rgb.size(); ++i) {
+        if (!(rgb[i] >= 0.0f && rgb[i] <= kMaxEmittedRadiance))
             throw Error("lat-long map: pixel " + std::to_string(i / 3 % std::size_t(width)) + ", " +
-                        std::to_string(i / 3 / std::size_t(width)) + " is not finite");
+                        std::to_string(i / 3 / std::size_t(width)) + " is " + std::to_string(rgb[i]) +
+                        ": not finite, negative or above 1e20");
+        maxValue_ = std::max(maxValue_, rgb[i]);
+    }
     levels_.push_back({width, height, std::move(rgb)});
     while (levels_.back().height > 1 || levels_.back().width > 1) levels_.push_back(halve(levels_.back()));
 }
@@ -101,13 +106,16 @@ EnvironmentLight::EnvironmentLight(std::shared_ptr<const LatLongMap> map, const 
                                    const Rgb& scale)
     : map_(std::move(map)), domeFromWorld_(rotationOf(domeToWorld, "dome light").transposed()), scale_(scale) {
     if (!map_) throw Error("dome light: no lat-long map");
-    if (!std::isfinite(scale.x) || !std::isfinite(scale.y) || !std::isfinite(scale.z))
-        throw Error("dome light: color * intensity * 2^exposure is not finite");
+    const double brightest = std::max({scale.x, scale.y, scale.z}) * double(map_->maxValue());
+    if (!(std::min({scale.x, scale.y, scale.z}) >= 0.0) || !(brightest <= kMaxEmittedRadiance))
+        throw Error("dome light: color * intensity * 2^exposure (" + std::to_string(scale.x) + ", " +
+                    std::to_string(scale.y) + ", " + std::to_string(scale.z) + ") times the map's brightest texel " +
+                    std::to_string(map_->maxValue()) + " must be non-negative and at most 1e20");
 }
 
 EnvironmentLight EnvironmentLight::fromDesc(std::shared_ptr<const LatLongMap> map, const hd::LightDesc& desc) {
     if (desc.kind != hd::LightKind::Dome) throw Error("dome light: the description is not a dome light");
-    return EnvironmentLight(std::move(map), desc.transform, desc.color * (desc.intensity * std::exp2(desc.exposure)));
+    return EnvironmentLight(std::move(map), desc.transform, emittedRadiance(desc));
 }
 
 std::vector<float> EnvironmentLight::cubeRadiance(const CubeMapLayout& cube, const Imath::M44d& objectToWorld) const {

@@ -36,10 +36,13 @@ namespace opal {
 class LatLongMap {
 public:
     // rgb: width x height x 3 floats, row-major, top row first. Throws opal::Error on a size
-    // mismatch, a non-positive size or a non-finite value.
+    // mismatch, a non-positive size or a value that is not finite, negative or above
+    // kMaxEmittedRadiance (light_emission.h).
     LatLongMap(int width, int height, std::vector<float> rgb);
 
     int width() const { return levels_.front().width; }
+    // The largest value of any channel of any pixel.
+    float maxValue() const { return maxValue_; }
     int height() const { return levels_.front().height; }
 
     // The orientation above: (u, v) <-> unit direction in the dome's space.
@@ -74,11 +77,14 @@ private:
     static Imath::V3f bilinear(const Level& level, float u, float v);
 
     std::vector<Level> levels_;  // [0] full resolution, then halved down to one row
+    float maxValue_ = 0.0f;
 };
 
 class EnvironmentLight {
 public:
-    // scale multiplies the map (RGB); domeToWorld may contain a uniform scale.
+    // scale multiplies the map (RGB); domeToWorld may contain a uniform scale. Throws
+    // opal::Error when scale is negative or scale times the map's largest value exceeds
+    // kMaxEmittedRadiance.
     EnvironmentLight(std::shared_ptr<const LatLongMap> map, const Imath::M44d& domeToWorld, const Rgb& scale);
     // UsdLux: scale = color * intensity * 2^exposure, transform from the description.
     static EnvironmentLight fromDesc(std::shared_ptr<const LatLongMap> map, const hd::LightDesc& desc);
@@ -89,6 +95,7 @@ public:
     std::vector<float> cubeRadiance(const CubeMapLayout& cube, const Imath::M44d& objectToWorld) const;
     // The same, Haar transformed per face: what the baked transport vectors are dotted with.
     std::vector<float> haarRadiance(const CubeMapLayout& cube, const Imath::M44d& objectToWorld) const;
+    const Rgb& scale() const { return scale_; }
 
 private:
     std::shared_ptr<const LatLongMap> map_;

@@ -66,7 +66,7 @@ void OpalLight::build(const hd::LightDesc& desc, std::shared_ptr<const LatLongMa
         if (kind_ == hd::LightKind::Dome) {
             auto environment = std::make_shared<const EnvironmentLight>(EnvironmentLight::fromDesc(map, desc));
             domeFromWorld_ = rotationOf(desc.transform, "transform").transposed();
-            domeScale_ = desc.color * (desc.intensity * std::exp2(desc.exposure));
+            domeScale_ = environment->scale();
             environment_ = std::move(environment);
             map_ = std::move(map);
         } else {

@@ -1,6 +1,6 @@
 #include "delegate/mesh_irradiance.h"
 
-#include "delegate/ray_scene.h"
+#include "raytrace/ray_scene.h"
 #include "schema/error.h"
 #include "schema/scatter/fresnel_moments.h"
 

@@ -125,6 +125,18 @@ void RelightEngine::weighProducts(bool reweigh, std::size_t begin, std::size_t e
     }
 }
 
+// Lights are bounded (light_emission.h) so that every sum stays finite for transfer values
+// a bake can produce; a sidecar whose values are finite but absurd (damaged, or written by
+// something else) could still overflow, and must not reach an image as NaN or infinity.
+// sum v * 0 is 0 exactly when every v is finite, and vectorizes (a few microseconds).
+void RelightEngine::requireFinite(std::span<const float> radiance) const {
+    float zero = 0.0f;
+    for (float v : radiance) zero += v * 0.0f;
+    if (zero != 0.0f)
+        throw Error("asset '" + asset_->name +
+                    "': the relit radiance is not finite: the sidecar's transfer values are out of range (re-bake it)");
+}
+
 // L = w1^-1 ((1/pi) sum_k s_k z_k), per channel; then the render-mesh vertices, and E(eta).
 void RelightEngine::formRadiance(bool reweigh) {
     radiance_.resize(samples_ * 3);
@@ -133,6 +145,7 @@ void RelightEngine::formRadiance(bool reweigh) {
         weighProducts(reweigh, r.begin(), r.end());
     });
     cdf97InverseCharts(std::span<float>(radiance_), asset_->layout, 3);
+    requireFinite(radiance_);
     const VertexWeights& weights = asset_->vertexWeights;
     if (vertexRadiance_.use_count() > 1) {
         std::shared_ptr<std::vector<float>> next = spareVertexRadiance_ && spareVertexRadiance_.use_count() == 1

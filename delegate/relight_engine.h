@@ -54,6 +54,7 @@ public:
 
 private:
     void formRadiance(bool reweigh);  // L = w1^-1 ((1/pi) sum_k s_k z_k), then the vertices
+    void requireFinite(std::span<const float> radiance) const;
     void weighProducts(bool reweigh, std::size_t begin, std::size_t end);
 
     std::shared_ptr<const TranslucentAsset> asset_;

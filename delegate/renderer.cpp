@@ -4,6 +4,7 @@
 #include "delegate/fresnel_table.h"
 
 #include "delegate/specular.h"
+#include "schema/error.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -20,6 +21,8 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <string>
+#include <utility>
 #include <cstdint>
 
 namespace opal {
@@ -140,7 +143,7 @@ void background(const FrameContext& context, Block& block) {
     std::size_t count = 0;
     for (int i = 0; i < block.count; ++i)
         if (!block.hits[i]) {
-            directions[count] = block.rays[i].direction;
+            directions[count] = block.rays[i].direction();
             pixelOf[count++] = i;
         }
     if (count == 0) return;
@@ -163,8 +166,8 @@ Surface shadeSurface(const FrameContext& context, const Ray& ray, const RayHit& 
     const std::uint32_t* v = mesh.triangles.data() + 3 * std::size_t(hit.triangle);
     const float b[3] = {1.0f - hit.u - hit.v, hit.u, hit.v};
     Surface s;
-    s.p = Imath::V3d(ray.origin) + Imath::V3d(ray.direction) * double(hit.t);
-    s.wo = -unit(Imath::V3d(ray.direction));
+    s.p = Imath::V3d(ray.origin()) + Imath::V3d(ray.direction()) * double(hit.t);
+    s.wo = -unit(Imath::V3d(ray.direction()));
     s.ng = unit(Imath::V3d(hit.geometricNormal));
     if (s.ng.dot(s.wo) < 0.0) s.ng = -s.ng;  // seen from behind: offsets go to the viewer's side
     s.n = s.ng;
@@ -202,12 +205,9 @@ void analyticSpecular(const FrameContext& context, const Block& block, std::arra
             if (!in || s.ng.dot(in->toLight) <= 0.0) continue;  // no light, or below the surface
             const double f = ggxReflectance(s.n, s.wo, in->toLight, s.mesh->alpha, *s.mesh->fresnel);
             if (f <= 0.0) continue;
-            Ray& shadow = shadows[count];
-            shadow.origin = Imath::V3f(s.p + s.ng * context.shadowOffset);
-            shadow.direction = Imath::V3f(in->toLight);
-            shadow.tNear = 0.0f;
-            shadow.tFar = std::isinf(in->distance) ? std::numeric_limits<float>::infinity()
-                                                   : float(in->distance * (1.0 - 1e-4));
+            const float far = std::isinf(in->distance) ? std::numeric_limits<float>::infinity()
+                                                       : float(in->distance * (1.0 - 1e-4));
+            shadows[count] = Ray(Imath::V3f(s.p + s.ng * context.shadowOffset), Imath::V3f(in->toLight), 0.0f, far);
             unshadowed[count] = Imath::V3d(in->normalIrradiance.x, in->normalIrradiance.y, in->normalIrradiance.z) * f;
             pixelOf[count++] = i;
         }
@@ -391,6 +391,24 @@ private:
     std::array<std::vector<float>, kAovs> storage_;
 };
 
+namespace {
+
+// Debug builds check what a pass wrote: every radiometric AOV finite (light_emission.h keeps
+// every sum in range; the relight engine refuses non-finite radiance). Tests check the same
+// on Release builds through the buffers.
+[[maybe_unused]] void requireFiniteRadiometric(const AovTargets& t, std::size_t pixels) {
+    const std::pair<const float*, std::size_t> radiometric[] = {
+        {t.color, 4}, {t.subsurface, 3}, {t.specular, 3}, {t.irradiance, 3}, {t.alpha, 1}};
+    for (const auto& [values, channels] : radiometric) {
+        if (!values) continue;
+        for (std::size_t i = 0; i < pixels * channels; ++i)
+            if (!std::isfinite(values[i]))
+                throw Error("renderer: pixel " + std::to_string(i / channels) + " of a radiometric AOV is not finite");
+    }
+}
+
+}  // namespace
+
 void renderFrame(const Frame& frame, const CameraView& camera, const RenderOptions& options, const AovTargets& targets) {
     const FrameContext context = frameContext(frame, camera, options);
     const int width = camera.width(), height = camera.height();
@@ -420,6 +438,9 @@ void renderFrame(const Frame& frame, const CameraView& camera, const RenderOptio
             tile.flush(x0, y0, x1, y1, width);
         }
     });
+#ifndef NDEBUG
+    requireFiniteRadiometric(targets, std::size_t(width) * std::size_t(height));
+#endif
 }
 
 }  // namespace opal

@@ -12,7 +12,7 @@
 #include "delegate/camera.h"
 #include "delegate/environment_light.h"
 #include "delegate/hd/types.h"
-#include "delegate/ray_scene.h"
+#include "raytrace/ray_scene.h"
 #include "schema/asset/translucent_asset.h"
 
 #include <Imath/ImathMatrix.h>

@@ -1,7 +1,9 @@
 #include "schema/asset/asset_layer.h"
 
 #include "schema/asset/bake_id.h"
+#include "schema/asset/point_range.h"
 #include "schema/asset/sidecar.h"
+#include "schema/asset/sidecar_checks.h"
 #include "schema/error.h"
 #include "schema/usd/usda_error.h"
 #include "schema/usd/usda_reader.h"
@@ -197,6 +199,8 @@ std::string primToAsset(const usda::Prim& prim, TranslucentAsset& asset) {
         throw Error(where(prim) + ": opal:basis:K is " + std::to_string(K) + " but there are " +
                     std::to_string(eigenvalues.size()) + " eigenvalues");
     try {
+        sidecar::checkUnitsPerMm(asset.unitsPerMm, "opal:unitsPerMm");
+        checkPointRange(asset.mesh.points, asset.unitsPerMm, "points", "point");
         asset.range.validate("opal:range");
         validateMaterial(asset.defaultMaterial, "default material");
         asset.basis = ProfileBasis(required<types::DoubleArray>(prim, "opal:basis:radii"),

@@ -75,6 +75,13 @@ inline constexpr std::uint64_t kMaxRawChunkBytes = std::uint64_t(1) << 36;
 inline constexpr std::uint64_t kMaxZstdExpansion = 32768;
 inline constexpr std::uint8_t kFlagRequired = 1;
 
+// The most decoded bytes a reader accepts for all chunks of one file together, before it
+// allocates any of them: 8 GiB by default, which a few-megabyte file could otherwise claim
+// through zstd's largest expansion. Bigger bakes raise it with the environment variable
+// OPAL_SIDECAR_MAX_BYTES (a byte count, SIDECAR.md "Limits").
+inline constexpr std::uint64_t kDefaultMaxDecodedBytes = std::uint64_t(8) << 30;
+inline constexpr const char* kMaxDecodedBytesVariable = "OPAL_SIDECAR_MAX_BYTES";
+
 }  // namespace container
 
 inline std::string ChunkTag::str() const {

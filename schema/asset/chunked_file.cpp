@@ -6,6 +6,7 @@
 #include "schema/error.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <cstring>
 
 namespace opal {
@@ -237,6 +238,30 @@ void ChunkedFileReader::checkPlacement(std::uint64_t tableOffset) const {
     if (expected != tableOffset)
         fail("chunk table: chunks end at byte " + std::to_string(expected) + ", the table starts at " +
              std::to_string(tableOffset));
+    checkDecodedTotal();
+}
+
+// The sum of the chunks' raw sizes against the cap (chunk_format.h), before any chunk is
+// decoded: each raw size was checked against what its stored bytes can expand to above.
+void ChunkedFileReader::checkDecodedTotal() const {
+    const std::uint64_t cap = maxDecodedBytes();
+    std::uint64_t total = 0;
+    for (const ChunkInfo& c : chunks_) total += c.rawSize;  // each <= 2^36, at most 1024: no overflow
+    if (total > cap)
+        fail("chunk table: the chunks decode to " + std::to_string(total) + " bytes, more than the " +
+             std::to_string(cap) + " a reader accepts (raise it with " + kMaxDecodedBytesVariable +
+             " if this file is genuine)");
+}
+
+std::uint64_t maxDecodedBytes() {
+    const char* text = std::getenv(kMaxDecodedBytesVariable);
+    if (!text || !*text) return kDefaultMaxDecodedBytes;
+    char* end = nullptr;
+    errno = 0;
+    const unsigned long long value = std::strtoull(text, &end, 10);
+    if (errno != 0 || *end != '\0' || *text == '-')
+        throw Error(std::string(kMaxDecodedBytesVariable) + " = '" + text + "' is not a byte count");
+    return value;
 }
 
 const ChunkInfo* ChunkedFileReader::find(ChunkTag tag) const {

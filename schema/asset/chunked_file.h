@@ -39,6 +39,10 @@ void writeChunkedFile(const std::filesystem::path& path, const FileKind& kind,
                       std::span<const ChunkProducer> chunks,
                       const ChunkedFileWriteOptions& options = {});
 
+// The cap on one file's decoded bytes: $OPAL_SIDECAR_MAX_BYTES, else
+// container::kDefaultMaxDecodedBytes. Throws opal::Error when the variable is not a number.
+std::uint64_t maxDecodedBytes();
+
 class ChunkedFileReader {
 public:
     // Opens `path` and validates its header and chunk table against `supported`: same
@@ -68,6 +72,7 @@ private:
     void readTable(std::uint32_t count, std::uint64_t tableOffset, std::uint64_t tableChecksum);
     ChunkInfo parseEntry(std::span<const std::byte> entry, std::size_t index) const;
     void checkPlacement(std::uint64_t tableOffset) const;
+    void checkDecodedTotal() const;
 
     std::filesystem::path path_;
     std::ifstream stream_;

@@ -19,8 +19,9 @@ double faceCoordinate(std::uint32_t i, std::uint32_t size) { return 2.0 * (i + 0
 }  // namespace
 
 CubeMapLayout::CubeMapLayout(std::uint32_t faceSize) : size_(faceSize) {
-    if (faceSize == 0 || (faceSize & (faceSize - 1)) != 0 || faceSize > 1024)
-        throw Error("cube map: face size must be a power of two up to 1024, got " + std::to_string(faceSize));
+    if (faceSize == 0 || (faceSize & (faceSize - 1)) != 0 || faceSize > kMaxFaceSize)
+        throw Error("cube map: face size must be a power of two up to " + std::to_string(kMaxFaceSize) + ", got " +
+                    std::to_string(faceSize));
 }
 
 ChartLayout CubeMapLayout::charts() const {

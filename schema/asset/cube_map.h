@@ -20,7 +20,8 @@ struct CubeMapTexel {
 
 class CubeMapLayout {
 public:
-    explicit CubeMapLayout(std::uint32_t faceSize);  // a power of two
+    static constexpr std::uint32_t kMaxFaceSize = 1024;
+    explicit CubeMapLayout(std::uint32_t faceSize);  // a power of two up to kMaxFaceSize
 
     std::uint32_t faceSize() const { return size_; }
     std::uint32_t texels() const { return 6 * size_ * size_; }

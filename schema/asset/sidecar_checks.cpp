@@ -189,6 +189,11 @@ void checkEnvironment(const EnvironmentTransfer& env, std::uint64_t samples, std
     checkOffsets(offsets, environmentRows(env, samples), env.indices.size(), context, "row offsets");
     checkIndices(offsets, env.indices, cubeCells, true, context, "cube-map indices");
     checkFinite(env.values, context, "values");
+    for (std::size_t i = 0; i < env.values.size(); ++i)
+        if (std::abs(env.values[i]) > kMaxEnvironmentValue)
+            fail(context, "value " + str(std::uint64_t(i)) + " is " + std::to_string(env.values[i]) +
+                              ": a transport value's magnitude is at most 4 pi (visibility x cosine x Fresnel "
+                              "moment x solid angle)");
 }
 
 template void checkOffsets<std::uint32_t>(std::span<const std::uint32_t>, std::uint64_t, std::uint64_t,

@@ -4,7 +4,9 @@
 // file and chunk ("a.opal: chunk 'TRNS'"); each check throws opal::Error.
 #pragma once
 
+#include "schema/asset/cube_map.h"
 #include "schema/asset/translucent_asset.h"
+#include "schema/scatter/fresnel_moments.h"
 
 #include <cstdint>
 #include <span>
@@ -15,8 +17,14 @@ namespace opal::sidecar {
 inline constexpr std::uint32_t kMaxLog2ChartSize = 15;
 inline constexpr std::uint64_t kMaxSamples = std::uint64_t(1) << 31;
 inline constexpr std::uint32_t kMaxBasisFunctions = 256;
-inline constexpr std::uint32_t kMaxCubeFaceSize = 4096;
-inline constexpr std::uint32_t kMaxFresnelTerms = 16;
+// What the runtime renders is what a reader accepts: one limit each, defined beside the
+// code that imposes it (CubeMapLayout's face size, the Fresnel response's terms).
+inline constexpr std::uint32_t kMaxCubeFaceSize = CubeMapLayout::kMaxFaceSize;
+inline constexpr std::uint32_t kMaxFresnelTerms = std::uint32_t(opal::kMaxFresnelTerms);
+// |v| of any environment transport value: v_m(t) = mu P_m(mu) Omega_t with |P_m| <= 1 on
+// [0, 1], so the vector's L1 norm is at most the sphere's 4 pi steradians, and an
+// orthonormal Haar coefficient is at most that norm (1% for binary16 rounding).
+inline constexpr double kMaxEnvironmentValue = 4.0 * 3.14159265358979323846 * 1.01;
 inline constexpr std::uint32_t kMaxNameBytes = 4096;
 inline constexpr float kUnitNormalTolerance = 1e-3f;    // | |n| - 1 |
 inline constexpr double kWeightSumTolerance = 1e-3;     // | sum_j w_vj - 1 |

@@ -2,6 +2,7 @@
 // allocations, CSR offsets before the indices that depend on them), then hand it over.
 #include "schema/asset/array_codec.h"
 #include "schema/asset/chunked_file.h"
+#include "schema/asset/point_range.h"
 #include "schema/asset/sidecar.h"
 #include "schema/asset/sidecar_checks.h"
 #include "schema/asset/transfer_value_grid.h"
@@ -53,7 +54,7 @@ ChartLayout readLayout(ChunkSource src, const SidecarHeader& header) {
     return layout;
 }
 
-std::vector<SurfaceSample> readSamples(ChunkSource src, std::uint64_t expected) {
+std::vector<SurfaceSample> readSamples(ChunkSource src, std::uint64_t expected, double unitsPerMm) {
     std::uint64_t count = src.readU64();
     if (count != expected) src.fail(str(count) + " samples, the chart layout has " + str(expected) + " cells");
     std::vector<float> positions = readFloatPlanes(src, 3 * count, "positions");
@@ -67,6 +68,9 @@ std::vector<SurfaceSample> readSamples(ChunkSource src, std::uint64_t expected) 
         samples[i].area = areas[i];
     }
     sidecar::checkSamples(samples, expected, src.context());
+    std::vector<Imath::V3f> points(samples.size());
+    for (std::size_t i = 0; i < samples.size(); ++i) points[i] = samples[i].position;
+    checkPointRange(points, unitsPerMm, src.context(), "sample");
     return samples;
 }
 
@@ -155,7 +159,7 @@ SidecarHeader readSidecar(const std::filesystem::path& path, TranslucentAsset& a
     Payload p;
     p.layout = readLayout(file.open(kLayout), header);
     std::uint64_t samples = p.layout.cells();
-    p.samples = readSamples(file.open(kSamples), samples);
+    p.samples = readSamples(file.open(kSamples), samples, header.unitsPerMm);
     p.vertexWeights = readVertexWeights(file.open(kVertexWeights), samples, header.vertexCount);
     p.transfer = readTransfer(file.open(kTransfer), p.layout, header.basisCount);
     p.environment = readEnvironment(file.open(kEnvironment), samples);

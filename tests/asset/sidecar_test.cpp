@@ -4,6 +4,7 @@
 #include "schema/asset/sidecar.h"
 
 #include "schema/asset/chunked_file.h"
+#include "schema/asset/xxhash64.h"
 #include "schema/error.h"
 #include "tests/asset/synthetic_asset.h"
 #include "tests/asset/test_files.h"
@@ -11,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <bit>
+#include <cstdlib>
 #include <cstring>
 #include <functional>
 
@@ -282,6 +284,14 @@ TEST(Sidecar, ContentInconsistenciesAreRejectedNamingTheChunk) {
              putBytes(b, 24 + (2 * n + 1) * 4 + a.environment.values.size() * 4, 112);
          },
          "values: half-float scale exponent 112 is outside [-160, 111]"},
+        {"ENVT",  // the largest scale the half planes allow: finite values the runtime would overflow on
+         [&](auto& b, const TranslucentAsset& a) {
+             putBytes(b, 24 + (2 * n + 1) * 4 + a.environment.values.size() * 4, 111);
+         },
+         "a transport value's magnitude is at most 4 pi"},
+        // What the runtime cannot render is refused by the reader, not at the first light.
+        {"ENVT", [](auto& b, auto&) { putBytes(b, 0, 2048); }, "cube face size 2048 is not a power of two in [1, 1024]"},
+        {"ENVT", [](auto& b, auto&) { putBytes(b, 4, 4); }, "4 Fresnel terms, outside [1, 3]"},
         {"TRNS", [&](auto& b, auto&) { putBytes(b, 24, 31); }, "matrix 0: 32 x 31, expected 32 x 32"},
         {"ENVT", [&](auto& b, auto&) { putBytes(b, 24 + (2 * n + 1) * 4, 24); }, ": index 24 >= 24"},
         {"ENVT", [](auto& b, auto&) { putBytes(b, 0, 3); }, "cube face size 3 is not a power of two"},
@@ -297,6 +307,78 @@ TEST(Sidecar, ContentInconsistenciesAreRejectedNamingTheChunk) {
         expectContains(errorOf([&] { readSidecar(dir / "bad.opal", asset); }),
                        {"bad.opal: chunk '" + (c.reported == ChunkTag{} ? c.tag : c.reported).str() + "'", c.problem});
     }
+}
+
+// The file's bytes with chunk `tag`'s table entry claiming `rawSize` decoded bytes, every
+// checksum of the header and table recomputed: a file only the size checks can refuse.
+std::vector<std::byte> withClaimedRawSize(std::vector<std::byte> file, ChunkTag tag, std::uint64_t rawSize) {
+    const auto get64 = [&](std::size_t at) {
+        std::uint64_t v = 0;
+        for (int i = 7; i >= 0; --i) v = (v << 8) | std::uint64_t(file[at + std::size_t(i)]);
+        return v;
+    };
+    const auto put64 = [&](std::size_t at, std::uint64_t v) {
+        for (int i = 0; i < 8; ++i) file[at + std::size_t(i)] = std::byte((v >> (8 * i)) & 0xFF);
+    };
+    const std::size_t tableOffset = std::size_t(get64(24)), tableBytes = file.size() - tableOffset;
+    for (std::size_t entry = tableOffset; entry < file.size(); entry += 48)
+        if (std::memcmp(&file[entry], tag.chars.data(), 4) == 0) put64(entry + 24, rawSize);
+    put64(40, xxh64(std::span(file).subspan(tableOffset, tableBytes)));
+    put64(56, xxh64(std::span(file).first(56)));
+    return file;
+}
+
+// Sets an environment variable for one scope.
+class ScopedEnv {
+public:
+    ScopedEnv(const char* name, const std::string& value) : name_(name) { setenv(name, value.c_str(), 1); }
+    ~ScopedEnv() { unsetenv(name_); }
+
+private:
+    const char* name_;
+};
+
+TEST(Sidecar, DeclaredDecodedSizesAreCappedBeforeAnyAllocation) {
+    TempDir dir;
+    writeSidecar(dir / "good.opal", test::syntheticAsset());
+    const std::vector<std::byte> good = test::readBytes(dir / "good.opal");
+    std::uint64_t decoded = 0, storedTransfer = 0;
+    {
+        ChunkedFileReader reader(dir / "good.opal", kSidecarKind);
+        for (const ChunkInfo& c : reader.chunks()) decoded += c.rawSize;
+        storedTransfer = reader.find("TRNS")->storedSize;
+    }
+    TranslucentAsset asset;
+    {  // the cap counts every chunk together
+        ScopedEnv cap("OPAL_SIDECAR_MAX_BYTES", std::to_string(decoded - 1));
+        expectContains(errorOf([&] { readSidecar(dir / "good.opal", asset); }),
+                       {"good.opal: chunk table: the chunks decode to " + std::to_string(decoded) + " bytes",
+                        "more than the " + std::to_string(decoded - 1), "OPAL_SIDECAR_MAX_BYTES"});
+    }
+    {
+        ScopedEnv cap("OPAL_SIDECAR_MAX_BYTES", std::to_string(decoded));
+        readSidecar(dir / "good.opal", asset);  // at the cap: read
+    }
+    {
+        ScopedEnv cap("OPAL_SIDECAR_MAX_BYTES", "lots");
+        expectContains(errorOf([&] { readSidecar(dir / "good.opal", asset); }), {"OPAL_SIDECAR_MAX_BYTES", "'lots'"});
+    }
+    // A transfer chunk claiming the most its stored bytes could expand to through zstd: a
+    // file of kilobytes asking for megabytes (gigabytes, for a megabyte file). Refused at the
+    // table, before any chunk is decoded, when that exceeds the cap...
+    const std::uint64_t claimed = storedTransfer * container::kMaxZstdExpansion;
+    test::writeBytes(dir / "claims.opal", withClaimedRawSize(good, "TRNS", claimed));
+    {
+        ScopedEnv cap("OPAL_SIDECAR_MAX_BYTES", std::to_string(claimed / 2));
+        expectContains(errorOf([&] { readSidecar(dir / "claims.opal", asset); }),
+                       {"claims.opal: chunk table: the chunks decode to", "more than the"});
+    }
+    // ...and, under the default cap, by the chunk's own decoder when the data ends early.
+    expectContains(errorOf([&] { readSidecar(dir / "claims.opal", asset); }), {"claims.opal: chunk 'TRNS'"});
+    // One byte more than zstd can expand the stored bytes to is refused outright.
+    test::writeBytes(dir / "more.opal", withClaimedRawSize(good, "TRNS", claimed + 1));
+    expectContains(errorOf([&] { readSidecar(dir / "more.opal", asset); }),
+                   {"more.opal: chunk 'TRNS'", "more than zstd can expand"});
 }
 
 TEST(Sidecar, MissingAndUnknownRequiredChunksAreRejected) {

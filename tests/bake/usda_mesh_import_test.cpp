@@ -418,6 +418,8 @@ std::vector<BadLayer> badLayers() {
     floatPoints.replace(floatPoints.find("point3f[]"), 9, "float3[]");
     std::string nanPoint = meshPrim("Cube", cube);
     nanPoint.replace(nanPoint.find("(-0.5, -0.5, -0.5)"), 18, "(nan, -0.5, -0.5)");
+    std::string hugePoint = meshPrim("Cube", cube);
+    hugePoint.replace(hugePoint.find("(-0.5, -0.5, -0.5)"), 18, "(3.4e38, -0.5, -0.5)");
     const std::string order = "    uniform token[] xformOpOrder = [\"xformOp:shear\"]\n";
     return {
         {"missing faceVertexIndices", layer(noIndices),
@@ -435,8 +437,14 @@ std::vector<BadLayer> badLayers() {
          layer(meshPrim("Cube", cube, "    float3 xformOp:scale = (1e38, 1e38, 1e38)\n    float3 xformOp:scale:again = "
                                       "(10, 10, 10)\n    uniform token[] xformOpOrder = [\"xformOp:scale\", "
                                       "\"xformOp:scale:again\"]\n")),
-         "</Cube>.points: point 0 (-0.5, -0.5, -0.5) is not a finite float after the prim's transform: (-5e+38, "
-         "-5e+38, -5e+38)",
+         "</Cube>.points: point 0 (-0.5, -0.5, -0.5) is (-5e+38, -5e+38, -5e+38) after the prim's transform: "
+         "5e+39 mm from the origin at the layer's metersPerUnit 0.01, beyond the 1e9 mm (1,000 km) an asset may span",
+         "point3f[] points"},
+        // Finite floats, but a thousand times the Earth's diameter at USD's default centimetres:
+        // such points would overflow ray offsets and sums downstream.
+        {"finite but out of range", layer(hugePoint),
+         "</Cube>.points: point 0 (3.4e+38, -0.5, -0.5) is (3.4e+38, -0.5, -0.5) after the prim's transform: "
+         "3.4e+39 mm from the origin",
          "point3f[] points"},
         {"unknown orientation", layer(meshPrim("Cube", cube, "    uniform token orientation = \"clockwise\"\n")),
          "</Cube>.orientation: 'clockwise' is not one of rightHanded, leftHanded", "uniform token orientation"},

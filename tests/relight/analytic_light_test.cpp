@@ -1,7 +1,7 @@
 #include "delegate/analytic_light.h"
 
 #include "delegate/fresnel_response.h"
-#include "delegate/ray_scene.h"
+#include "raytrace/ray_scene.h"
 #include "schema/error.h"
 #include "schema/scatter/dipole.h"
 #include "schema/scatter/fresnel_moments.h"

@@ -1,6 +1,6 @@
 #include "delegate/mesh_irradiance.h"
 
-#include "delegate/ray_scene.h"
+#include "raytrace/ray_scene.h"
 #include "delegate/relight_engine.h"
 #include "schema/error.h"
 #include "synthetic_asset.h"

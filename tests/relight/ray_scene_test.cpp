@@ -1,4 +1,4 @@
-#include "delegate/ray_scene.h"
+#include "raytrace/ray_scene.h"
 
 #include "schema/error.h"
 
@@ -6,6 +6,8 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
+#include <vector>
 
 namespace opal {
 namespace {
@@ -80,6 +82,89 @@ TEST(RayScene, RejectsBadMeshesAndUncommittedQueries) {
     EXPECT_THROW(scene.addMesh(bad, Imath::M44d()), Error);
     scene.addMesh(unitQuad(), Imath::M44d());
     EXPECT_THROW(scene.occluded(Ray{{0, -1, 0}, {0, 1, 0}, 0, 2}), Error);
+}
+
+// Rays Embree's assertions would abort on (Debian builds Embree with them): each becomes the
+// empty segment, which every query form traces without hitting anything.
+TEST(Ray, WhatEmbreeWouldRejectBecomesTheEmptySegment) {
+    const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+    const Imath::V3f o(0.5f, 0.0f, 0.5f), up(0, 1, 0);
+    const std::vector<Ray> bad = {
+        Ray({nan, 0, 0}, up, 0, 2),        Ray(o, {0, nan, 0}, 0, 2),      Ray({3.4e38f, 0, 0}, up, 0, 2),
+        Ray(o, {0, 2e18f, 0}, 0, 2),       Ray({inf, 0, 0}, up, 0, 2),     Ray(o, {0, 0, 0}, 0, 2),
+        Ray(o, up, nan, 2),                Ray(o, up, 0, nan),             Ray(o, up, -1, 2),
+        Ray(o, up, 3, 2),
+    };
+    for (const Ray& r : bad) {
+        EXPECT_TRUE(r.empty());
+        EXPECT_TRUE(std::isfinite(r.origin().x) && std::isfinite(r.direction().y) && r.tNear() >= 0.0f);
+    }
+    EXPECT_FALSE(Ray(o, up, 0, inf).empty());  // an unbounded segment is fine
+    EXPECT_FALSE(Ray(o, up, 0, 0).empty());    // so is a point
+
+    RayScene scene;
+    scene.addMesh(unitQuad(), translation(0, 1, 0));
+    scene.commit();
+    std::vector<std::uint8_t> blocked(bad.size(), 7);
+    scene.occluded(bad, blocked);
+    for (std::uint8_t b : blocked) EXPECT_EQ(b, 0);
+    scene.occludedCoherent(bad, blocked);
+    for (std::uint8_t b : blocked) EXPECT_EQ(b, 0);
+    std::vector<std::optional<RayHit>> hits(bad.size());
+    scene.intersectCoherent(bad, hits);
+    for (std::size_t i = 0; i < bad.size(); ++i) {
+        EXPECT_FALSE(hits[i]) << i;
+        EXPECT_FALSE(scene.intersect(bad[i])) << i;
+        EXPECT_FALSE(scene.occluded(bad[i])) << i;
+    }
+}
+
+// 1e30 over the stack below the caller's frame, where a callee's locals will lie: as a
+// stale packet slot it reads as tnear = tfar = 1e30 (a segment Embree's stream filter
+// traces) with an origin beyond Embree's 1.8e18 limit.
+[[gnu::noinline]] void poisonStack() {
+    volatile float junk[16384];
+    for (volatile float& f : junk) f = 1e30f;
+}
+
+// The main job's abort, made deterministic: a packet query with fewer rays than a packet
+// holds, on a stack full of garbage. On processors without native 16-wide Embree kernels (AVX2,
+// as on this project's machines) Embree ignores the valid mask and traces every slot whose
+// tnear <= tfar, so unused slots must hold the empty segment (ray_scene.cpp).
+TEST(RayScene, PartialPacketsNeverHandEmbreeStaleSlots) {
+    RayScene scene;
+    scene.addMesh(unitQuad(), translation(0, 1, 0));
+    scene.commit();
+    for (std::size_t count = 1; count < RayScene::kPacketSize; ++count) {
+        const std::vector<Ray> rays(count, Ray({0.5f, 0.0f, 0.5f}, {0, 1, 0}, 0.0f, 2.0f));
+        std::vector<std::uint8_t> blocked(count);
+        poisonStack();
+        scene.occludedCoherent(rays, blocked);
+        for (std::uint8_t b : blocked) EXPECT_EQ(b, 1);
+        std::vector<std::optional<RayHit>> hits(count);
+        poisonStack();
+        scene.intersectCoherent(rays, hits);
+        for (const std::optional<RayHit>& hit : hits) EXPECT_TRUE(hit && std::abs(hit->t - 1.0f) < 1e-6f);
+    }
+}
+
+TEST(RayScene, RefusesPointsOutsideTheRangeNamingTheFirst) {
+    for (const float bad : {3.4e38f, std::numeric_limits<float>::quiet_NaN(), 2e12f}) {
+        RayScene scene;
+        RenderMesh mesh = unitQuad();
+        mesh.points[2].y = bad;
+        try {
+            scene.addMesh(mesh, Imath::M44d());
+            ADD_FAILURE() << "accepted a point at " << bad;
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find("point 2 lies at"), std::string::npos) << e.what();
+        }
+    }
+    // A transform can carry a good mesh out of range too.
+    Imath::M44d huge;
+    huge.setScale(1e13);
+    RayScene scene;
+    EXPECT_THROW(scene.addMesh(unitQuad(), huge), Error);
 }
 
 }  // namespace

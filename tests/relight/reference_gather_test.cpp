@@ -1,7 +1,7 @@
 #include "delegate/reference_gather.h"
 
 #include "delegate/mesh_irradiance.h"
-#include "delegate/ray_scene.h"
+#include "raytrace/ray_scene.h"
 #include "delegate/relight_engine.h"
 #include "schema/error.h"
 #include "schema/scatter/dipole.h"

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <numbers>
+#include <string>
 
 namespace opal {
 namespace {
@@ -65,6 +66,21 @@ TEST(RelightEngine, LosslessTransferMatchesTheDenseProduct) {
         EXPECT_LT(test::maxRelative(engine.sampleIrradiance(),
                                     moments.combine(fresnelMoments(asset->defaultMaterial.eta, int(terms)))),
                   1e-7);
+    }
+}
+
+// Finite transfer values no bake produces (a damaged sidecar with valid checksums): the
+// product overflows, and the engine refuses to hand out NaN or infinite radiance.
+TEST(RelightEngine, AbsurdTransferValuesAreAnErrorNotNaNInTheImage) {
+    auto asset = slabAsset();
+    for (float& v : asset->transfer.perBasis[0].values) v = v >= 0.0f ? 3e38f : -3e38f;
+    RelightEngine engine(asset);
+    try {
+        engine.setIrradiance(test::randomMoments(std::uint32_t(asset->samples.size()), 2, 5));
+        ADD_FAILURE() << "no error";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("asset 'slab': the relit radiance is not finite"), std::string::npos)
+            << e.what();
     }
 }
 

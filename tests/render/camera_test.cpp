@@ -8,18 +8,18 @@
 namespace opal {
 namespace {
 
-Imath::V3d directionOf(const Ray& ray) { return Imath::V3d(ray.direction).normalized(); }
+Imath::V3d directionOf(const Ray& ray) { return Imath::V3d(ray.direction()).normalized(); }
 
 TEST(CameraView, LooksDownMinusZWithXRightAndYUp) {
     const CameraView view(test::frontCamera(10.0), 300, 200, "/Camera");
     const Ray centre = view.ray(150.0, 100.0);
-    EXPECT_NEAR(centre.origin.z, 10.0f, 1e-6);
+    EXPECT_NEAR(centre.origin().z, 10.0f, 1e-6);
     EXPECT_NEAR(directionOf(centre).z, -1.0, 1e-12);
-    EXPECT_FLOAT_EQ(centre.direction.z, -1.0f);  // t is the depth along the view axis
-    EXPECT_GT(view.ray(299.5, 100.0).direction.x, 0.0f);  // the right edge looks toward +X
-    EXPECT_GT(view.ray(150.0, 0.5).direction.y, 0.0f);    // the top row looks toward +Y
-    EXPECT_EQ(centre.tNear, 0.1f);
-    EXPECT_EQ(centre.tFar, 1.0e6f);
+    EXPECT_FLOAT_EQ(centre.direction().z, -1.0f);  // t is the depth along the view axis
+    EXPECT_GT(view.ray(299.5, 100.0).direction().x, 0.0f);  // the right edge looks toward +X
+    EXPECT_GT(view.ray(150.0, 0.5).direction().y, 0.0f);    // the top row looks toward +Y
+    EXPECT_EQ(centre.tNear(), 0.1f);
+    EXPECT_EQ(centre.tFar(), 1.0e6f);
 }
 
 TEST(CameraView, FitsTheApertureInTheImage) {
@@ -29,16 +29,16 @@ TEST(CameraView, FitsTheApertureInTheImage) {
     desc.verticalAperture = 24.0;
     // The film's aspect: the left edge of the image is the left edge of the film.
     const CameraView same(desc, 360, 240, "/Camera");
-    EXPECT_NEAR(same.ray(0.0, 120.0).direction.x, -18.0f / 50.0f, 1e-6);
-    EXPECT_NEAR(same.ray(180.0, 0.0).direction.y, 12.0f / 50.0f, 1e-6);
+    EXPECT_NEAR(same.ray(0.0, 120.0).direction().x, -18.0f / 50.0f, 1e-6);
+    EXPECT_NEAR(same.ray(180.0, 0.0).direction().y, 12.0f / 50.0f, 1e-6);
     // A square image shows the whole width and extends the height.
     const CameraView square(desc, 100, 100, "/Camera");
-    EXPECT_NEAR(square.ray(0.0, 50.0).direction.x, -18.0f / 50.0f, 1e-6);
-    EXPECT_NEAR(square.ray(50.0, 0.0).direction.y, 18.0f / 50.0f, 1e-6);
+    EXPECT_NEAR(square.ray(0.0, 50.0).direction().x, -18.0f / 50.0f, 1e-6);
+    EXPECT_NEAR(square.ray(50.0, 0.0).direction().y, 18.0f / 50.0f, 1e-6);
     // A wide image shows the whole height and extends the width.
     const CameraView wide(desc, 400, 100, "/Camera");
-    EXPECT_NEAR(wide.ray(200.0, 0.0).direction.y, 12.0f / 50.0f, 1e-6);
-    EXPECT_NEAR(wide.ray(0.0, 50.0).direction.x, -48.0f / 50.0f, 1e-6);
+    EXPECT_NEAR(wide.ray(200.0, 0.0).direction().y, 12.0f / 50.0f, 1e-6);
+    EXPECT_NEAR(wide.ray(0.0, 50.0).direction().x, -48.0f / 50.0f, 1e-6);
 }
 
 TEST(CameraView, FollowsTheCameraTransform) {
@@ -51,18 +51,18 @@ TEST(CameraView, FollowsTheCameraTransform) {
     desc.transform = scale * m * test::translation(5, 1, 2);
     const CameraView view(desc, 64, 64, "/Camera");
     const Ray centre = view.ray(32.0, 32.0);
-    EXPECT_NEAR(centre.origin.x, 5.0f, 1e-5);
-    EXPECT_NEAR(centre.origin.y, 1.0f, 1e-5);
+    EXPECT_NEAR(centre.origin().x, 5.0f, 1e-5);
+    EXPECT_NEAR(centre.origin().y, 1.0f, 1e-5);
     EXPECT_NEAR(directionOf(centre).x, -1.0, 1e-6);
-    EXPECT_NEAR(Imath::V3d(centre.direction).length(), 1.0, 1e-6);  // depth stays in world units
+    EXPECT_NEAR(Imath::V3d(centre.direction()).length(), 1.0, 1e-6);  // depth stays in world units
 }
 
 // Slab test: does the ray through a pixel centre meet the box within [tNear, tFar]?
 bool rayMeetsBox(const Ray& ray, const Imath::Box3f& box) {
-    double t0 = ray.tNear, t1 = ray.tFar;
+    double t0 = ray.tNear(), t1 = ray.tFar();
     for (int a = 0; a < 3; ++a) {
-        const double inv = 1.0 / ray.direction[a];
-        double ta = (box.min[a] - ray.origin[a]) * inv, tb = (box.max[a] - ray.origin[a]) * inv;
+        const double inv = 1.0 / ray.direction()[a];
+        double ta = (box.min[a] - ray.origin()[a]) * inv, tb = (box.max[a] - ray.origin()[a]) * inv;
         if (ta > tb) std::swap(ta, tb);
         t0 = std::max(t0, ta), t1 = std::min(t1, tb);
     }

@@ -14,7 +14,7 @@
 // 2,048 samples costs ~8 s; the sum well under one).
 #include "bake/bake_pipeline.h"
 #include "delegate/mesh_irradiance.h"
-#include "delegate/ray_scene.h"
+#include "raytrace/ray_scene.h"
 #include "delegate/reference_gather.h"
 #include "delegate/relight_engine.h"
 #include "tests/bake/bake_test_support.h"

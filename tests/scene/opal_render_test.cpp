@@ -4,6 +4,7 @@
 // pixels; a malformed scene must exit 1 naming file:line:column and leave no file behind.
 #include "bake/bake_pipeline.h"
 #include "tests/scene/scene_test_files.h"
+#include "tests/render/render_scene.h"
 
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
@@ -11,6 +12,8 @@
 #include <sys/wait.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -217,6 +220,96 @@ TEST(OpalRender, MalformedSceneExitsOneAndWritesNothing) {
         << run.err;
     EXPECT_FALSE(std::filesystem::exists(dir / "out.exr"));
     EXPECT_FALSE(std::filesystem::exists(dir / "out.png"));
+}
+
+// Hostile input never ends in an abort, NaN or a half-written file: each is refused with
+// the prim or file and what is wrong, exit 1, nothing written.
+void expectRefused(const test::SceneDir& dir, std::initializer_list<std::string> parts) {
+    const ProcessResult run = runOpalRender(dir, "'" + (dir / "scene.usda").string() + "' -o '" +
+                                                     (dir / "out.exr").string() + "' --preview '" +
+                                                     (dir / "out.png").string() + "'");
+    EXPECT_EQ(run.exitCode, 1) << run.err;
+    for (const std::string& part : parts) EXPECT_NE(run.err.find(part), std::string::npos) << run.err << "lacks " << part;
+    EXPECT_FALSE(std::filesystem::exists(dir / "out.exr"));
+    EXPECT_FALSE(std::filesystem::exists(dir / "out.png"));
+}
+
+// Each input finite and in its own range, the product beyond what Opal can sum in float.
+TEST(OpalRender, LightsWhoseRadianceOverflowsAreRefusedNamingPrimAndAttributes) {
+    const test::SceneDir dir;
+    dir.writeSphereAsset("sphere");
+    const std::string intensity = "    float inputs:intensity = 1\n";
+    const std::vector<std::string> lights = {
+        "    float inputs:intensity = 3e38\n",
+        "    float inputs:intensity = 1\n    float inputs:exposure = 200\n",
+        "    float inputs:intensity = 1\n    color3f inputs:color = (3e38, 3e38, 3e38)\n",
+    };
+    for (const std::string& light : lights) {
+        std::string scene = litScene("1");
+        scene.replace(scene.find(intensity), intensity.size(), light);
+        dir.write("scene.usda", scene);
+        expectRefused(dir, {"light '/Bulb'", "inputs:intensity", "inputs:exposure", "inputs:color",
+                            "the largest emitted radiance Opal renders"});
+    }
+}
+
+TEST(OpalRender, AnAssetPointOutOfRangeIsRefusedNamingFilePrimAndIndex) {
+    const test::SceneDir dir;
+    TranslucentAsset sphere = *test::sphereAsset(2, 5.0f, 0);
+    sphere.mesh.points[3].x = 3.4e38f;  // finite, and would make every shadow ray's origin infinite
+    writeSidecar(dir / "sphere.opal", sphere);
+    writeAssetLayer(dir / "sphere.usda", sphere, "./sphere.opal");
+    dir.write("scene.usda", litScene("2000"));
+    expectRefused(dir, {(dir / "sphere.usda").string() + ":", "prim '" + sphere.name + "'", "point 3 (3.4e+38",
+                        "beyond the 1e9 mm"});
+}
+
+TEST(OpalRender, ADomeTextureWithABadTexelIsRefusedNamingFileAndTexel) {
+    const test::SceneDir dir;
+    dir.writeSphereAsset("sphere");
+    for (const float bad : {std::nanf(""), -1.0f, std::numeric_limits<float>::infinity()}) {
+        std::vector<float> rgb(4 * 2 * 3, 0.5f);
+        rgb[(1 * 4 + 2) * 3 + 1] = bad;  // texel (2, 1), green
+        auto out = OIIO::ImageOutput::create("env.exr");
+        ASSERT_TRUE(out);
+        ASSERT_TRUE(out->open((dir / "env.exr").string(), OIIO::ImageSpec(4, 2, 3, OIIO::TypeDesc::FLOAT)));
+        ASSERT_TRUE(out->write_image(OIIO::TypeDesc::FLOAT, rgb.data()));
+        out->close();
+        std::string scene = litScene("2000");
+        scene += "def DomeLight \"Sky\"\n{\n    asset inputs:texture:file = @./env.exr@\n}\n";
+        dir.write("scene.usda", scene);
+        expectRefused(dir, {"light '/Sky'", "env.exr", "texel (2, 1) channel 1"});
+    }
+}
+
+// The brightest light Opal accepts, a hair above the surface: the specular layer's
+// irradiance saturates (1e25) and every radiometric AOV stays finite and non-negative.
+TEST(OpalRender, TheBrightestAcceptedLightAtTheSurfaceRendersFiniteValues) {
+    const test::SceneDir dir;
+    dir.writeSphereAsset("sphere");
+    std::string scene = litScene("9e19");  // 1e20 as a float is just above 1e20
+    const std::string at = "(0, 5, 20)";
+    scene.replace(scene.find(at), at.size(), "(0, 0, 5.001)");  // facing the camera
+    dir.write("scene.usda", scene);
+    const ProcessResult run = runOpalRender(dir, "'" + (dir / "scene.usda").string() + "' -o '" +
+                                                     (dir / "out.exr").string() + "' --float");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    auto in = OIIO::ImageInput::open((dir / "out.exr").string());
+    ASSERT_TRUE(in) << OIIO::geterror();
+    const OIIO::ImageSpec spec = in->spec();
+    std::vector<float> pixels(std::size_t(spec.width) * spec.height * spec.nchannels);
+    ASSERT_TRUE(in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data()));
+    int lit = 0;
+    for (int c = 0; c < spec.nchannels; ++c) {
+        const std::string& name = spec.channelnames[c];
+        if (name.rfind("normal.", 0) == 0 || name.rfind("depth.", 0) == 0 || name.rfind("primId.", 0) == 0) continue;
+        for (std::size_t p = 0; p < std::size_t(spec.width) * spec.height; ++p) {
+            const float v = pixels[p * spec.nchannels + std::size_t(c)];
+            ASSERT_TRUE(std::isfinite(v) && v >= 0.0f) << name << " at pixel " << p << " is " << v;
+            if (name == "R" && v > 0.0f) ++lit;  // the highlight: the samples all face away
+        }
+    }
+    EXPECT_GT(lit, 0);
 }
 
 TEST(OpalRender, BadCommandLineExitsTwo) {

@@ -1,8 +1,9 @@
-#include "delegate/ray_scene.h"
+#include "raytrace/ray_scene.h"
 
 #include "schema/error.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <string>
 
@@ -16,32 +17,42 @@ namespace {
 
 RTCRay toEmbree(const Ray& r) {
     RTCRay ray{};
-    ray.org_x = r.origin.x;
-    ray.org_y = r.origin.y;
-    ray.org_z = r.origin.z;
-    ray.dir_x = r.direction.x;
-    ray.dir_y = r.direction.y;
-    ray.dir_z = r.direction.z;
-    ray.tnear = r.tNear;
-    ray.tfar = r.tFar;
+    ray.org_x = r.origin().x;
+    ray.org_y = r.origin().y;
+    ray.org_z = r.origin().z;
+    ray.dir_x = r.direction().x;
+    ray.dir_y = r.direction().y;
+    ray.dir_z = r.direction().z;
+    ray.tnear = r.tNear();
+    ray.tfar = r.tFar();
     ray.mask = std::numeric_limits<unsigned>::max();
     return ray;
 }
 
 // Ray `slot` of an Embree packet (RTCRay16 or the ray of an RTCRayHit16).
 void setPacketRay(RTCRay16& packet, std::size_t slot, const Ray& r) {
-    packet.org_x[slot] = r.origin.x;
-    packet.org_y[slot] = r.origin.y;
-    packet.org_z[slot] = r.origin.z;
-    packet.dir_x[slot] = r.direction.x;
-    packet.dir_y[slot] = r.direction.y;
-    packet.dir_z[slot] = r.direction.z;
-    packet.tnear[slot] = r.tNear;
-    packet.tfar[slot] = r.tFar;
+    packet.org_x[slot] = r.origin().x;
+    packet.org_y[slot] = r.origin().y;
+    packet.org_z[slot] = r.origin().z;
+    packet.dir_x[slot] = r.direction().x;
+    packet.dir_y[slot] = r.direction().y;
+    packet.dir_z[slot] = r.direction().z;
+    packet.tnear[slot] = r.tNear();
+    packet.tfar[slot] = r.tFar();
     packet.time[slot] = 0.0f;
     packet.mask[slot] = std::numeric_limits<unsigned>::max();
     packet.id[slot] = 0;
     packet.flags[slot] = 0;
+}
+
+// Slots [count, kPacketSize) of a packet: the empty segment. Embree ignores the valid mask
+// where the processor has no native 16-wide kernels (an AVX2 machine): rtcOccluded16 and
+// rtcIntersect16 then go through its ray-stream filter, which takes every slot with
+// tnear <= tfar as a ray. A slot left as it was (stale rays, or uninitialized stack holding
+// NaN) was traced there, and Embree's ray.valid() assertion aborted the process: the
+// main job's occasional "Aborted" on such machines.
+void clearUnusedSlots(RTCRay16& packet, std::size_t count) {
+    for (std::size_t i = count; i < RayScene::kPacketSize; ++i) setPacketRay(packet, i, Ray());
 }
 
 // Embree's packet valid mask: -1 for the first `count` slots, 0 for the rest.
@@ -57,6 +68,13 @@ RTCIntersectContext coherentContext() {
     rtcInitIntersectContext(&context);
     context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
     return context;
+}
+
+// A hit's geometric normal, or nothing when it is zero or not finite (a degenerate
+// triangle): such a hit is a miss, since no surface orientation can be shaded there.
+bool shadeableNormal(float x, float y, float z) {
+    const float m = std::max({std::abs(x), std::abs(y), std::abs(z)});
+    return m > 0.0f && m <= std::numeric_limits<float>::max();
 }
 
 // Fans every polygon (c0, c(t+1), c(t+2)), checking indices against the point count.
@@ -84,13 +102,31 @@ void fanTriangles(const RenderMesh& mesh, std::vector<std::uint32_t>& triangles,
     }
 }
 
+static_assert(RayScene::kMaxWorldCoordinate == 1e12, "the message below quotes the limit");
+
+// The mesh's points in world space, each checked finite and within kMaxWorldCoordinate.
+std::vector<Imath::V3f> worldPoints(const RenderMesh& mesh, const Imath::M44d& objectToWorld) {
+    std::vector<Imath::V3f> world(mesh.points.size());
+    for (std::size_t v = 0; v < mesh.points.size(); ++v) {
+        Imath::V3d p;
+        objectToWorld.multVecMatrix(Imath::V3d(mesh.points[v]), p);
+        if (!(std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}) <= RayScene::kMaxWorldCoordinate))
+            throw Error("ray scene: point " + std::to_string(v) + " lies at (" + std::to_string(p.x) + ", " +
+                        std::to_string(p.y) + ", " + std::to_string(p.z) + ") in world space: not finite or beyond " +
+                        "the 1e12 units from the origin a scene may span");
+        world[v] = Imath::V3f(p);
+    }
+    return world;
+}
+
 }  // namespace
 
-RayScene::RayScene() {
+RayScene::RayScene(BuildQuality quality) {
     device_ = rtcNewDevice(nullptr);
     if (!device_) embreeFailure(nullptr, "creating a device");
     scene_ = rtcNewScene(device_);
     if (!scene_) embreeFailure(device_, "creating a scene");
+    if (quality == BuildQuality::High) rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
 }
 
 RayScene::~RayScene() {
@@ -101,24 +137,22 @@ RayScene::~RayScene() {
 std::uint32_t RayScene::addMesh(const RenderMesh& mesh, const Imath::M44d& objectToWorld) {
     Mesh added;
     fanTriangles(mesh, added.triangles, added.faceOfTriangle);
+    const std::vector<Imath::V3f> world = worldPoints(mesh, objectToWorld);
     RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
     if (!geometry) embreeFailure(device_, "creating a triangle geometry");
     auto* points = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                                               3 * sizeof(float), mesh.points.size()));
+                                                               3 * sizeof(float), world.size()));
     auto* indices = static_cast<std::uint32_t*>(rtcSetNewGeometryBuffer(
         geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(std::uint32_t), added.faceOfTriangle.size()));
     if (!points || !indices) {
         rtcReleaseGeometry(geometry);
         embreeFailure(device_, "allocating mesh buffers");
     }
-    for (std::size_t v = 0; v < mesh.points.size(); ++v) {
-        Imath::V3d world;
-        objectToWorld.multVecMatrix(Imath::V3d(mesh.points[v]), world);
-        const Imath::V3f p(world);
-        points[3 * v + 0] = p.x;
-        points[3 * v + 1] = p.y;
-        points[3 * v + 2] = p.z;
-        bounds_.extendBy(p);
+    for (std::size_t v = 0; v < world.size(); ++v) {
+        points[3 * v + 0] = world[v].x;
+        points[3 * v + 1] = world[v].y;
+        points[3 * v + 2] = world[v].z;
+        bounds_.extendBy(world[v]);
     }
     std::copy(added.triangles.begin(), added.triangles.end(), indices);
     rtcCommitGeometry(geometry);
@@ -196,6 +230,7 @@ void RayScene::occludedCoherent(std::span<const Ray> rays, std::span<std::uint8_
     for (std::size_t first = 0; first < rays.size(); first += kPacketSize) {
         const std::size_t n = std::min(kPacketSize, rays.size() - first);
         for (std::size_t i = 0; i < n; ++i) setPacketRay(packet, i, rays[first + i]);
+        clearUnusedSlots(packet, n);
         const PacketMask mask(n);
         rtcOccluded16(mask.valid, scene_, &context, &packet);
         for (std::size_t i = 0; i < n; ++i) blocked[first + i] = packet.tfar[i] < 0.0f ? 1 : 0;
@@ -214,12 +249,15 @@ void RayScene::intersectCoherent(std::span<const Ray> rays, std::span<std::optio
             packet.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
             packet.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
         }
+        clearUnusedSlots(packet.ray, n);
         const PacketMask mask(n);
         rtcIntersect16(mask.valid, scene_, &context, &packet);
         for (std::size_t i = 0; i < n; ++i) {
             std::optional<RayHit>& hit = hits[first + i];
             hit.reset();
-            if (packet.hit.geomID[i] == RTC_INVALID_GEOMETRY_ID) continue;
+            if (packet.hit.geomID[i] == RTC_INVALID_GEOMETRY_ID ||
+                !shadeableNormal(packet.hit.Ng_x[i], packet.hit.Ng_y[i], packet.hit.Ng_z[i]))
+                continue;
             hit.emplace();
             hit->prim = packet.hit.geomID[i];
             hit->triangle = packet.hit.primID[i];
@@ -240,7 +278,8 @@ std::optional<RayHit> RayScene::intersect(const Ray& r) const {
     query.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     query.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(scene_, &context, &query);
-    if (query.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+    if (query.hit.geomID == RTC_INVALID_GEOMETRY_ID || !shadeableNormal(query.hit.Ng_x, query.hit.Ng_y, query.hit.Ng_z))
+        return std::nullopt;
     RayHit hit;
     hit.prim = query.hit.geomID;
     hit.triangle = query.hit.primID;

@@ -1,7 +1,7 @@
-// An Embree 3 scene of the world-space triangle meshes of a render index (hdEmbree keeps
-// one Embree scene per index the same way). Two queries: occlusion along a segment (the
-// shadow rays of analytic lights, DESIGN.md s.6) and the closest hit (the render pass's
-// primary rays, s.7), each one ray at a time, as a stream of unrelated rays, or as
+// An Embree 3 scene of world-space triangle meshes: the render index's meshes (hdEmbree
+// keeps one Embree scene per index the same way) and the bake's render mesh. Two queries:
+// occlusion along a segment (shadow rays of lights, the bake's visibility) and the closest
+// hit (primary rays), each one ray at a time, as a stream of unrelated rays, or as
 // coherent packets: Embree traverses 8 rays that start close together and point alike
 // (neighbouring pixels' primary rays, their shadow rays toward one light) about twice as
 // fast together as one by one. Polygons are fanned into triangles: triangle t of a face with
@@ -9,8 +9,15 @@
 //
 // Build: addMesh() for every mesh, then commit(). Queries are const and thread-safe on a
 // committed scene; adding a mesh afterwards needs another commit().
+//
+// Every ray is a Ray (ray.h), valid for Embree by construction; every world-space point is
+// finite and within kMaxWorldCoordinate (addMesh refuses others), so that points, offsets
+// along normals and ray parameters stay far inside Embree's range. A hit on a triangle
+// whose geometric normal is zero or not finite (a degenerate triangle, reachable by camera
+// rays) counts as a miss: nothing can be shaded there.
 #pragma once
 
+#include "raytrace/ray.h"
 #include "schema/asset/translucent_asset.h"
 
 #include <embree3/rtcore.h>
@@ -27,14 +34,6 @@
 
 namespace opal {
 
-// A ray segment origin + t direction, t in [tNear, tFar].
-struct Ray {
-    Imath::V3f origin;
-    Imath::V3f direction;
-    float tNear = 0.0f;
-    float tFar = 0.0f;
-};
-
 struct RayHit {
     std::uint32_t prim = 0;      // the mesh, numbered in the order added
     std::uint32_t triangle = 0;  // the fanned triangle within that mesh
@@ -45,14 +44,21 @@ struct RayHit {
 
 class RayScene {
 public:
-    RayScene();
+    // World coordinates above this magnitude are refused: a millionth of Embree's limit,
+    // so that a scene's extent, ray offsets and far ray parameters stay finite and in range.
+    static constexpr double kMaxWorldCoordinate = 1e12;
+
+    // Bvh build quality: Medium for the render index (rebuilt on edits), High for a bake.
+    enum class BuildQuality { Medium, High };
+    explicit RayScene(BuildQuality quality = BuildQuality::Medium);
     ~RayScene();
     RayScene(const RayScene&) = delete;
     RayScene& operator=(const RayScene&) = delete;
 
     // Adds a mesh with points mapped to world space by objectToWorld (row vectors, as USD
     // and Imath: p_world = p_object * M). Returns its prim number. Throws opal::Error on
-    // an index out of range or a face with fewer than three corners.
+    // an index out of range, a face with fewer than three corners, or a world point that is
+    // not finite or exceeds kMaxWorldCoordinate (naming the first such point's index).
     std::uint32_t addMesh(const RenderMesh& mesh, const Imath::M44d& objectToWorld);
     // Builds the acceleration structure. Throws opal::Error when Embree reports an error.
     void commit();
