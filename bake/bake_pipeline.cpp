@@ -1,5 +1,6 @@
 #include "bake/bake_pipeline.h"
 
+#include "bake/bake_identifier.h"
 #include "bake/bake_report.h"
 #include "bake/chart_parameterization.h"
 #include "bake/mesh_import.h"
@@ -15,6 +16,7 @@
 #include "schema/asset/point_range.h"
 #include "schema/asset/sidecar.h"
 #include "schema/asset/transfer_apply.h"
+#include "schema/usd/crash_point.h"
 #include "schema/usd/usda_writer.h"
 
 #include <Imath/ImathBox.h>
@@ -216,6 +218,7 @@ TranslucentAsset bakeAsset(const BakeOptions& options, ProgressSink* progress, c
         r.transferRelRmse = measureTransferError(asset, options.seed);
     }
     clock.lap("measure");
+    asset.bake.identifier = bakeIdentifier(options, asset);
 
     r.samples = asset.samples.size();
     r.charts = asset.layout.charts;
@@ -226,18 +229,33 @@ TranslucentAsset bakeAsset(const BakeOptions& options, ProgressSink* progress, c
     return asset;
 }
 
-void writeBakedAsset(const std::filesystem::path& stem, const TranslucentAsset& asset, BakeReport* report) {
-    std::filesystem::path usda = stem, sidecar = stem;
-    usda += ".usda";
-    sidecar += ".opal";
+void writeBakedAsset(const StemLock& lock, const TranslucentAsset& asset, BakeReport* report) {
+    if (!asset.bake.identifier)
+        throw Error(lock.stem().layer().string() + ": the asset has no bake identifier (bakeAsset gives it one)");
+    const AssetStem& stem = lock.stem();
+    const std::filesystem::path sidecar = stem.sidecar(*asset.bake.identifier);
     // The layer is formed (and the asset's name checked) before anything is written.
     const usda::Layer layer = assetToLayer(asset, sidecar.filename().string());
+    std::vector<std::string> local;
+    std::vector<std::string>& warnings = report ? report->warnings : local;
+    crashPoint("bake:writing");
+    stem.removeStaleTemporaries(&warnings);
+    crashPoint("bake:cleaned");
     writeSidecar(sidecar, asset);
-    usda::writeUsdaFile(usda, layer);
+    usda::writeUsdaFile(stem.layer(), layer);  // the commit
+    crashPoint("bake:committed");
+    stem.removeSidecarsExcept(*asset.bake.identifier, &warnings);
+    crashPoint("bake:pruned");
     if (report) {
+        report->sidecarFile = sidecar;
         report->sidecarBytes = std::filesystem::file_size(sidecar);
         report->peakRssBytes = peakRssBytes();
     }
+}
+
+void writeBakedAsset(const std::filesystem::path& stem, const TranslucentAsset& asset, BakeReport* report) {
+    const StemLock lock{AssetStem(stem)};
+    writeBakedAsset(lock, asset, report);
 }
 
 double measureTransferError(const TranslucentAsset& asset, std::uint64_t seed) {

@@ -5,6 +5,7 @@
 
 #include "bake/environment_visibility.h"
 #include "bake/progress.h"
+#include "bake/stem_lock.h"
 #include "bake/transfer_builder.h"
 #include "schema/asset/translucent_asset.h"
 
@@ -44,18 +45,29 @@ struct BakeReport {
     std::uint64_t renderVertices = 0;
     TransferStats transfer;
     std::uint64_t sidecarBytes = 0;
+    std::filesystem::path sidecarFile;  // STEM.<bake id>.opal, once written
     double transferRelRmse = 0.0;
     std::vector<std::pair<std::string, double>> seconds;  // per stage, in order
     std::uint64_t peakRssBytes = 0;
     std::vector<std::string> warnings;
 };
 
-// Runs every stage up to a complete in-memory asset. Throws opal::Error (or Cancelled).
+// Runs every stage up to a complete in-memory asset, with its bake identifier
+// (bake_identifier.h). Throws opal::Error (or Cancelled).
 TranslucentAsset bakeAsset(const BakeOptions& options, ProgressSink* progress, const CancelToken& cancel,
                            BakeReport* report);
 
-// Writes STEM.usda and STEM.opal, each atomically (temporary file + rename); the sidecar
-// first, so a reader that sees the new layer also sees its sidecar.
+// Replaces the asset at the locked stem as one unit (asset_stem.h): removes temporaries
+// killed bakes left, writes the sidecar STEM.<bake id>.opal, then renames the layer
+// STEM.usda into place (the commit), then removes the sidecars it superseded. Whenever the
+// process dies, the stem holds the complete previous asset or the complete new one. Each
+// step has a crash point (schema/usd/crash_point.h): bake:writing, bake:cleaned,
+// opal:created/written/renamed, usda:created/written/renamed, bake:committed,
+// bake:pruned-one, bake:pruned. Throws opal::Error naming the file; the previous asset is
+// then intact. The asset must carry a bake identifier.
+void writeBakedAsset(const StemLock& lock, const TranslucentAsset& asset, BakeReport* report);
+
+// The same, taking the stem's lock for the write.
 void writeBakedAsset(const std::filesystem::path& stem, const TranslucentAsset& asset, BakeReport* report);
 
 // compressed vs exact transfer: RMS over >= 512 random output samples and RGB of the

@@ -50,6 +50,7 @@ void writeBakeReport(const std::filesystem::path& path, const BakeOptions& optio
     j["step1_bytes"] = r.transfer.step1Bytes;
     j["step2_bytes"] = r.transfer.step2Bytes;
     j["sidecar_bytes"] = r.sidecarBytes;
+    j["sidecar_file"] = r.sidecarFile.string();
     j["compression_ratio"] = r.sidecarBytes ? double(r.transfer.rawBytes) / double(r.sidecarBytes) : 0.0;
     j["energy_kept"] = r.transfer.energyKept;
     j["transfer_rel_rmse"] = r.transferRelRmse;
@@ -76,12 +77,12 @@ std::string formatBakeSummary(const std::filesystem::path& stem, const BakeRepor
     for (const auto& [stage, s] : r.seconds) total += s;
     char buf[1024];
     std::snprintf(buf, sizeof buf,
-                  "opal-bake: wrote %s.usda and %s.opal\n"
+                  "opal-bake: wrote %s.usda and %s\n"
                   "  samples %llu (%u charts of %ux%u), render vertices %llu\n"
                   "  transfer  raw %.1f MiB | step 1 (Haar) %.1f MiB | step 2 (CDF 9/7) %.1f MiB | sidecar %.1f MiB\n"
                   "  compression %.0fx, energy kept %.6f, transfer rel. RMSE %.4f\n"
                   "  %.1f s, peak memory %.0f MiB\n",
-                  stem.string().c_str(), stem.string().c_str(), (unsigned long long)r.samples, r.charts, r.grid,
+                  stem.string().c_str(), r.sidecarFile.string().c_str(), (unsigned long long)r.samples, r.charts, r.grid,
                   r.grid, (unsigned long long)r.renderVertices, mib(r.transfer.rawBytes), mib(r.transfer.step1Bytes),
                   mib(r.transfer.step2Bytes), mib(r.sidecarBytes),
                   r.sidecarBytes ? double(r.transfer.rawBytes) / double(r.sidecarBytes) : 0.0, r.transfer.energyKept,

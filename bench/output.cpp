@@ -1,23 +1,13 @@
 #include "bench/output.h"
 
-#include <cerrno>
-#include <cstring>
-#include <fstream>
+#include "delegate/atomic_write.h"
+#include "schema/usd/atomic_file.h"
+
 #include <stdexcept>
 #include <string>
 #include <system_error>
 
 namespace opal::bench {
-
-namespace {
-
-std::filesystem::path temporarySibling(const std::filesystem::path& path) {
-    std::filesystem::path tmp = path;
-    tmp.replace_filename(path.stem().string() + ".tmp" + path.extension().string());
-    return tmp;
-}
-
-}  // namespace
 
 void ensureDirectory(const std::filesystem::path& dir) {
     std::error_code ec;
@@ -27,33 +17,27 @@ void ensureDirectory(const std::filesystem::path& dir) {
                                  (ec ? ec.message() : std::string("a file of that name exists")));
 }
 
+// Through the delegate's writer: a unique temporary name, fsync before the rename, and
+// on any failure the temporary removed and an error naming the file and the cause.
 void writeFileAtomically(const std::filesystem::path& path,
                          const std::function<bool(const std::filesystem::path&)>& write) {
-    const std::filesystem::path tmp = temporarySibling(path);
-    std::string problem;
     try {
-        if (!write(tmp)) problem = "write failed";
+        opal::writeAtomically(path, [&](const std::filesystem::path& temporary) {
+            if (!write(temporary)) throw std::runtime_error("write failed");
+        });
     } catch (const std::exception& e) {
-        problem = e.what();
+        throw std::runtime_error(e.what());
     }
-    std::error_code ec;
-    if (problem.empty()) {
-        std::filesystem::rename(tmp, path, ec);
-        if (!ec) return;
-        problem = ec.message();
-    }
-    std::filesystem::remove(tmp, ec);
-    throw std::runtime_error("cannot write '" + path.string() + "': " + problem);
 }
 
+// Through the writer of plain bytes, whose errors carry the system's reason (a full disk,
+// a folder without write permission).
 void writeTextAtomically(const std::filesystem::path& path, std::string_view text) {
-    writeFileAtomically(path, [&](const std::filesystem::path& tmp) {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        if (!out) throw std::runtime_error(std::strerror(errno));
-        out.write(text.data(), static_cast<std::streamsize>(text.size()));
-        out.close();
-        return !out.fail();
-    });
+    try {
+        opal::writeFileAtomically(path, text);
+    } catch (const std::exception& e) {
+        throw std::runtime_error(e.what());
+    }
 }
 
 }  // namespace opal::bench

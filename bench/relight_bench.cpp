@@ -452,7 +452,9 @@ int run(const Options& options) {
     RunInfo info;
     info.asset = options.asset;
     info.loadBefore = loadAverage();
-    auto asset = std::make_shared<const TranslucentAsset>(readAsset(options.asset));
+    std::vector<std::string> assetWarnings;
+    auto asset = std::make_shared<const TranslucentAsset>(readAsset(options.asset, &assetWarnings));
+    for (const std::string& warning : assetWarnings) std::printf("  warning: %s\n", warning.c_str());
     const std::shared_ptr<const LatLongMap> domeMap = loadDome(options.env, *asset);
     if (domeMap) info.env = options.env;
     info.samples = asset->samples.size();

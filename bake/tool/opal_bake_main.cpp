@@ -1,5 +1,6 @@
 // opal-bake INPUT -o OUT_STEM [options]: bakes a mesh into an Opal asset (OUT_STEM.usda +
-// OUT_STEM.opal). Exit codes: 0 done, 1 error, 2 bad arguments, 130/143 interrupted by
+// OUT_STEM.<bake id>.opal, bake/asset_stem.h). Exit codes: 0 done, 1 error (including
+// another bake writing the same stem), 2 bad arguments, 130/143 interrupted by
 // SIGINT/SIGTERM (nothing written; a previous asset stays intact).
 #include "bake/bake_pipeline.h"
 #include "bake/bake_report.h"
@@ -43,7 +44,8 @@ int main(int argc, char** argv) {
     std::string outStem, jsonPath, range;
     bool quiet = false;
     app.add_option("input", options.input, "mesh file (.obj .ply .gltf .glb .stl .usda) or builtin:candle")->required();
-    app.add_option("-o,--output", outStem, "output stem: writes STEM.usda and STEM.opal")->required();
+    app.add_option("-o,--output", outStem, "output stem: writes STEM.usda and its sidecar STEM.<bake id>.opal")
+        ->required();
     app.add_option("--scheme", options.scheme,
                    "subdivision scheme; auto: a .usda's subdivisionScheme, else loop for all-triangle meshes, "
                    "else catmullClark")
@@ -96,10 +98,12 @@ int main(int argc, char** argv) {
     opal::ProgressBar progress(stderr, opal::ProgressBar::styleFor(stderr, quiet));
     const opal::CancelToken cancel(&gInterrupted);
     try {
+        // Taken before the work, so that a second bake of the stem fails at once.
+        const opal::StemLock lock{opal::AssetStem(outStem)};
         opal::BakeReport report;
         const opal::TranslucentAsset asset = opal::bakeAsset(options, &progress, cancel, &report);
         cancel.throwIfRequested();
-        opal::writeBakedAsset(outStem, asset, &report);
+        opal::writeBakedAsset(lock, asset, &report);
         for (const std::string& w : report.warnings) std::fprintf(stderr, "opal-bake: warning: %s\n", w.c_str());
         if (!jsonPath.empty()) opal::writeBakeReport(jsonPath, options, report);
         if (!quiet) std::fprintf(stderr, "%s", opal::formatBakeSummary(outStem, report).c_str());

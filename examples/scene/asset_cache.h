@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <string>
+#include <vector>
 
 namespace opal::scene {
 
@@ -18,6 +20,10 @@ public:
     // load is not cached.
     std::shared_ptr<const TranslucentAsset> load(const std::filesystem::path& usdaFile);
 
+    // What reading the assets warned about (an asset that should be re-baked), once per
+    // asset file, since the last call.
+    std::vector<std::string> takeWarnings();
+
     std::size_t size() const { return assets_.size(); }
     // How many loads read files (the rest came from the cache).
     std::size_t reads() const { return reads_; }
@@ -25,6 +31,7 @@ public:
 private:
     std::map<std::filesystem::path, std::shared_ptr<const TranslucentAsset>> assets_;
     std::size_t reads_ = 0;
+    std::vector<std::string> warnings_;
 };
 
 }  // namespace opal::scene

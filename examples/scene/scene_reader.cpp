@@ -79,6 +79,7 @@ public:
         for (const usda::Prim& prim : layer.rootPrims) readPrim(prim, Inherited{});
         checkBindings();
         checkRenderCamera();
+        for (std::string& warning : assets_.takeWarnings()) scene_.warnings.push_back(std::move(warning));
         return std::move(scene_);
     }
 

@@ -1,5 +1,6 @@
 #include "schema/asset/asset_layer.h"
 
+#include "schema/asset/bake_id.h"
 #include "schema/asset/point_range.h"
 #include "schema/asset/sidecar.h"
 #include "schema/asset/sidecar_checks.h"
@@ -68,6 +69,38 @@ void addSubsurface(usda::Prim& prim, const TranslucentAsset& asset, const std::s
     prim.addAttribute("opal:basis:weights", Value::make<types::DoubleArray>(doubles(b.weights())), true);
     prim.addAttribute("opal:basis:values", Value::make<types::DoubleArray>(doubles(b.values())), true);
     prim.addAttribute("opal:sidecar", Value::asset(sidecar), true);
+    if (asset.bake.identifier)
+        prim.addAttribute(std::string(kBakeIdAttribute), Value::string(formatBakeId(*asset.bake.identifier)), true);
+}
+
+std::optional<std::uint64_t> readBakeIdAttribute(const usda::Prim& prim) {
+    const usda::Attribute* attribute = prim.findAttribute(kBakeIdAttribute);
+    if (!attribute) return std::nullopt;
+    const std::string& text = attribute->get<types::String>();
+    const std::optional<std::uint64_t> id = parseBakeId(text);
+    if (!id)
+        throw Error(attribute->location.str() + ": " + std::string(kBakeIdAttribute) + " is \"" + text +
+                    "\", expected " + std::to_string(kBakeIdDigits) + " lowercase hexadecimal digits");
+    return id;
+}
+
+std::string idText(const std::optional<std::uint64_t>& id) { return id ? formatBakeId(*id) : "none"; }
+
+// Both halves carry the bake's identifier and they agree; or neither does: an asset
+// baked before the identifier existed loads with one warning.
+void checkSameBake(const std::filesystem::path& usdaPath, const std::filesystem::path& sidecarPath,
+                   const std::optional<std::uint64_t>& layerId, const std::optional<std::uint64_t>& sidecarId,
+                   std::vector<std::string>* warnings) {
+    if (layerId == sidecarId) {
+        if (!layerId && warnings)
+            warnings->push_back(usdaPath.string() + ": asset baked before Opal recorded bake identifiers: its layer "
+                                "and its sidecar " + sidecarPath.filename().string() +
+                                " cannot be checked to come from the same bake; re-bake it with opal-bake");
+        return;
+    }
+    throw Error("sidecar and layer are not from the same bake: " + usdaPath.string() + " has bake id " +
+                idText(layerId) + ", " + sidecarPath.lexically_normal().string() + " has bake id " + idText(sidecarId) +
+                " (re-bake the asset)");
 }
 
 usda::Dictionary bakeDictionary(const BakeSettings& bake) {
@@ -179,10 +212,11 @@ std::string primToAsset(const usda::Prim& prim, TranslucentAsset& asset) {
         throw Error(where(prim) + ": prim '" + prim.name + "': " + e.what());
     }
     asset.bake = readBakeSettings(prim);
+    asset.bake.identifier = readBakeIdAttribute(prim);
     return required<types::Asset>(prim, "opal:sidecar");
 }
 
-TranslucentAsset readAsset(const std::filesystem::path& usdaPath) {
+TranslucentAsset readAsset(const std::filesystem::path& usdaPath, std::vector<std::string>* warnings) {
     const usda::Layer layer = usda::readUsdaFile(usdaPath);
     const std::string defaultPrim = layer.defaultPrim();
     if (layer.rootPrims.empty()) throw Error(usdaPath.string() + ": the layer has no prims");
@@ -191,6 +225,7 @@ TranslucentAsset readAsset(const std::filesystem::path& usdaPath) {
     const std::string sidecar = primToAsset(prim, asset);
     const std::filesystem::path sidecarPath = usdaPath.parent_path() / sidecar;
     const SidecarHeader header = readSidecar(sidecarPath, asset);
+    checkSameBake(usdaPath, sidecarPath, asset.bake.identifier, header.bakeId, warnings);
     checkSidecarMatches(header, asset, sidecarPath);
     return asset;
 }

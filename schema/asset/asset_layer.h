@@ -9,10 +9,13 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace opal {
 
 inline constexpr std::string_view kSubsurfaceApi = "OpalSubsurfaceAPI";
+// The bake's identifier (bake_id.h), written when asset.bake.identifier is set.
+inline constexpr std::string_view kBakeIdAttribute = "opal:bakeId";
 
 // An asset's name is the name of its prim: `text` with every character that is not a
 // letter, digit or '_' replaced by '_', and '_' in front of a leading digit or an empty
@@ -34,7 +37,11 @@ void writeAssetLayer(const std::filesystem::path& usdaPath, const TranslucentAss
 std::string primToAsset(const usda::Prim& prim, TranslucentAsset& asset);
 
 // Reads `usdaPath` (its default prim, else its first root prim), then the sidecar it names
-// (resolved relative to the layer's directory), validating both and their agreement.
-TranslucentAsset readAsset(const std::filesystem::path& usdaPath);
+// (resolved relative to the layer's directory), validating both and their agreement: the
+// bake identifiers of layer and sidecar must be equal ("sidecar and layer are not from the
+// same bake", naming both files and both identifiers), and so must what the sidecar's
+// header records of the layer. An asset whose halves both lack an identifier (baked before
+// Opal recorded one) loads, and adds one warning to `warnings` saying to re-bake it.
+TranslucentAsset readAsset(const std::filesystem::path& usdaPath, std::vector<std::string>* warnings = nullptr);
 
 }  // namespace opal

@@ -11,16 +11,17 @@
 #include "schema/asset/translucent_asset.h"
 
 #include <cstdint>
+#include <optional>
 #include <filesystem>
 #include <string>
 
 namespace opal {
 
 // 2.0: transfer values on a quantization grid, environment values as half planes (1.0
-// stored both as float planes).
-inline constexpr FileKind kSidecarKind{"SCAT", {2, 0}};
+// stored both as float planes). 2.1 adds the optional BKID chunk (the bake identifier).
+inline constexpr FileKind kSidecarKind{"SCAT", {2, 1}};
 
-// The chunk tags (all required in version 2.0).
+// The chunk tags (all required in version 2.0, except BKID: optional, from 2.1).
 namespace sidecar_chunk {
 inline constexpr ChunkTag kHeader{"HEAD"};
 inline constexpr ChunkTag kLayout{"CHRT"};
@@ -28,6 +29,7 @@ inline constexpr ChunkTag kSamples{"SMPL"};
 inline constexpr ChunkTag kVertexWeights{"VWGT"};
 inline constexpr ChunkTag kTransfer{"TRNS"};
 inline constexpr ChunkTag kEnvironment{"ENVT"};
+inline constexpr ChunkTag kBakeId{"BKID"};
 }  // namespace sidecar_chunk
 
 struct SidecarWriteOptions {
@@ -42,6 +44,7 @@ struct SidecarHeader {
     std::uint32_t basisCount = 0;   // K: matrices in the transfer, functions in the basis
     std::uint32_t vertexCount = 0;  // render-mesh vertices the weights are for
     std::uint64_t meshTopologyHash = 0;
+    std::optional<std::uint64_t> bakeId;  // the BKID chunk; empty in sidecars baked without one
 };
 
 // XXH64 of the render mesh's face vertex counts and indices and its vertex count

@@ -12,7 +12,7 @@ namespace {
 
 using namespace sidecar_chunk;
 
-constexpr ChunkTag kKnownChunks[] = {kHeader, kLayout, kSamples, kVertexWeights, kTransfer, kEnvironment};
+constexpr ChunkTag kKnownChunks[] = {kHeader, kLayout, kSamples, kVertexWeights, kTransfer, kEnvironment, kBakeId};
 
 struct Payload {
     ChartLayout layout;
@@ -35,6 +35,12 @@ SidecarHeader readHeader(ChunkSource src) {
     src.finish();
     sidecar::checkUnitsPerMm(h.unitsPerMm, src.context());
     return h;
+}
+
+std::uint64_t readBakeId(ChunkSource src) {
+    const std::uint64_t id = src.readU64();
+    src.finish();
+    return id;
 }
 
 ChartLayout readLayout(ChunkSource src, const SidecarHeader& header) {
@@ -149,6 +155,7 @@ SidecarHeader readSidecar(const std::filesystem::path& path, TranslucentAsset& a
     ChunkedFileReader file(path, kSidecarKind);
     file.rejectUnknownRequired(kKnownChunks);
     SidecarHeader header = readHeader(file.open(kHeader));
+    if (file.find(kBakeId)) header.bakeId = readBakeId(file.open(kBakeId));
     Payload p;
     p.layout = readLayout(file.open(kLayout), header);
     std::uint64_t samples = p.layout.cells();

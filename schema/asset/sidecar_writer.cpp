@@ -109,7 +109,10 @@ void writeSidecar(const std::filesystem::path& path, const TranslucentAsset& a,
         {kEnvironment, ChunkCodec::Zstd, true,
          [&](ChunkSink& s) { writeEnvironment(s, a.environment, a.layout.cells()); }},
     };
-    writeChunkedFile(path, kSidecarKind, chunks, {options.zstdLevel});
+    std::vector<ChunkProducer> all(std::begin(chunks), std::end(chunks));
+    if (a.bake.identifier)  // optional: readers older than 2.1 skip it
+        all.push_back({kBakeId, ChunkCodec::Raw, false, [&](ChunkSink& s) { s.writeU64(*a.bake.identifier); }});
+    writeChunkedFile(path, kSidecarKind, all, {options.zstdLevel});
 }
 
 }  // namespace opal

@@ -11,6 +11,7 @@
 #include <Imath/ImathVec.h>
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -74,11 +75,14 @@ struct BakeSettings {
     std::uint32_t level = 0;       // uniform subdivision level
     std::uint64_t seed = 1;
     std::uint32_t envTerms = 128;
+    // The bake's identifier (bake_id.h), recorded in the layer and the sidecar; empty for
+    // assets baked before Opal recorded one (and for assets made in memory).
+    std::optional<std::uint64_t> identifier;
 };
 
 // Where each part lives on disk: name.usda holds name, unitsPerMm, mesh, basis,
-// defaultMaterial, range and bake; the sidecar name.opal (sidecar.h) holds layout,
-// samples, vertexWeights, transfer and environment.
+// defaultMaterial, range and bake; the sidecar name.<bake id>.opal (sidecar.h) holds
+// layout, samples, vertexWeights, transfer and environment.
 struct TranslucentAsset {
     std::string name;
     double unitsPerMm = 1.0;

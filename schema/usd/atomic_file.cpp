@@ -1,6 +1,7 @@
 #include "schema/usd/atomic_file.h"
 
 #include "schema/error.h"
+#include "schema/usd/crash_point.h"
 
 #include <cerrno>
 #include <cstring>
@@ -27,6 +28,13 @@ std::filesystem::path temporaryPathFor(const std::filesystem::path& target) {
 
 std::string errnoText() { return std::strerror(errno); }
 
+// "<extension without the dot>:<moment>", the crash points of one write (crash_point.h).
+void crashPointOf(const std::filesystem::path& target, std::string_view moment) {
+    std::string extension = target.extension().string();
+    if (!extension.empty()) extension.erase(0, 1);
+    crashPoint(extension + ":" + std::string(moment));
+}
+
 // fsync of a directory makes the rename durable; some file systems refuse it (EINVAL),
 // which only means they give no such guarantee.
 bool syncDirectory(const std::filesystem::path& directory) {
@@ -45,6 +53,7 @@ AtomicFileWriter::AtomicFileWriter(std::filesystem::path target)
     fd_ = ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
     if (fd_ < 0) fail("cannot create the temporary file");
     buffer_.reserve(kBufferBytes);
+    crashPointOf(target_, "created");
 }
 
 AtomicFileWriter::~AtomicFileWriter() {
@@ -94,6 +103,7 @@ void AtomicFileWriter::overwrite(std::uint64_t offset, std::span<const std::byte
 
 void AtomicFileWriter::commit() {
     flush();
+    crashPointOf(target_, "written");
     if (::fsync(fd_) != 0) fail("cannot fsync the temporary file");
     int fd = fd_;
     fd_ = -1;
@@ -101,6 +111,7 @@ void AtomicFileWriter::commit() {
     if (::rename(temporary_.c_str(), target_.c_str()) != 0)
         fail("cannot rename into place the temporary file");
     committed_ = true;
+    crashPointOf(target_, "renamed");
     if (!syncDirectory(target_.parent_path()))
         throw Error(target_.string() + ": written, but cannot fsync its directory: " + errnoText());
 }

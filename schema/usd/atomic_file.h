@@ -3,7 +3,9 @@
 // renames over the target (then fsyncs the directory). Until then the previous target is
 // untouched; if the writer is destroyed without commit() (an exception, a failed
 // producer), the temporary file is removed. A crash can leave a stray temporary file but
-// never a half-written target.
+// never a half-written target. A write passes three crash points (crash_point.h), named
+// for the target's extension: "<ext>:created" (empty temporary), "<ext>:written" (complete
+// temporary, not yet renamed) and "<ext>:renamed" (in place, directory not yet synced).
 #pragma once
 
 #include <cstddef>

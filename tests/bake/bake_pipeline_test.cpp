@@ -9,6 +9,7 @@
 #include "bake/subdivision.h"
 #include "bake/transfer_builder.h"
 #include "schema/asset/asset_layer.h"
+#include "schema/asset/bake_id.h"
 #include "schema/asset/transfer_apply.h"
 #include "schema/usd/usda_reader.h"
 #include "tests/bake/bake_test_support.h"
@@ -435,8 +436,11 @@ TEST(BakePipeline, WrittenAssetReadsBackBitExact) {
     BakeReport report;
     const TranslucentAsset a = bakeAsset(options, nullptr, CancelToken{}, &report);
     writeBakedAsset(dir / "candle", a, &report);
-    EXPECT_EQ(dir.list(), (std::vector<std::string>{"candle.opal", "candle.usda"}));
-    EXPECT_EQ(report.sidecarBytes, std::filesystem::file_size(dir / "candle.opal"));
+    ASSERT_TRUE(a.bake.identifier.has_value());
+    const std::string sidecar = "candle." + formatBakeId(*a.bake.identifier) + ".opal";
+    EXPECT_EQ(dir.list(), (std::vector<std::string>{sidecar, "candle.usda"}));
+    EXPECT_EQ(report.sidecarFile, dir / sidecar);
+    EXPECT_EQ(report.sidecarBytes, std::filesystem::file_size(dir / sidecar));
 
     // The layer as text: the applied schema and the render mesh as authored.
     const std::string usda = test::readBytes(dir / "candle.usda");
@@ -444,11 +448,12 @@ TEST(BakePipeline, WrittenAssetReadsBackBitExact) {
     for (const char* attr : {"opal:eta", "opal:sigmaA", "opal:sigmaSPrime", "opal:unitsPerMm",
                              "opal:range:sigmaSPrime", "opal:range:sigmaA", "opal:range:eta", "opal:basis:K",
                              "opal:basis:eigenvalues", "opal:basis:radii", "opal:basis:weights",
-                             "opal:basis:values", "opal:sidecar"})
+                             "opal:basis:values", "opal:sidecar", "opal:bakeId"})
         EXPECT_NE(usda.find(std::string(attr) + " = "), std::string::npos) << attr;
-    EXPECT_TRUE(usda.find("opal:sidecar = @candle.opal@") != std::string::npos ||
-                usda.find("opal:sidecar = @./candle.opal@") != std::string::npos)
+    EXPECT_TRUE(usda.find("opal:sidecar = @" + sidecar + "@") != std::string::npos ||
+                usda.find("opal:sidecar = @./" + sidecar + "@") != std::string::npos)
         << "the sidecar path is the sidecar's name, relative to the layer";
+    EXPECT_NE(usda.find("opal:bakeId = \"" + formatBakeId(*a.bake.identifier) + "\""), std::string::npos);
     EXPECT_NE(usda.find("subdivisionScheme = \"none\""), std::string::npos);
     EXPECT_EQ(intArrayInText(usda, "faceVertexCounts"), a.mesh.faceVertexCounts);
     EXPECT_EQ(intArrayInText(usda, "faceVertexIndices"), a.mesh.faceVertexIndices);
@@ -520,6 +525,7 @@ TEST(BakePipeline, WrittenAssetReadsBackBitExact) {
     EXPECT_EQ(b.bake.level, 1u);
     EXPECT_EQ(b.bake.seed, a.bake.seed);
     EXPECT_EQ(b.bake.envTerms, a.bake.envTerms);
+    EXPECT_EQ(b.bake.identifier, a.bake.identifier);
 
     // The reported error is the in-memory asset's, and the stored asset gives the same up
     // to the material's rounding to float.
@@ -529,7 +535,8 @@ TEST(BakePipeline, WrittenAssetReadsBackBitExact) {
 }
 
 TEST(BakePipeline, RewritingKeepsOnlyTheTwoFiles) {
-    // Overwriting an asset replaces both files and leaves no temporary files behind.
+    // Overwriting an asset replaces both files (the superseded sidecar is removed) and
+    // leaves no temporary or lock file behind.
     const test::ScratchDir dir;
     BakeOptions options;
     options.input = "builtin:candle";
@@ -539,12 +546,14 @@ TEST(BakePipeline, RewritingKeepsOnlyTheTwoFiles) {
     options.visibility.terms = 16;
     const TranslucentAsset a = bakeAsset(options, nullptr, CancelToken{}, nullptr);
     writeBakedAsset(dir / "c", a, nullptr);
-    const std::string first = test::readBytes(dir / "c.opal");
+    const std::string first = test::sidecarNamedBy(dir / "c.usda");
+    EXPECT_EQ(dir.list(), (std::vector<std::string>{first, "c.usda"}));
     options.seed = 2;
     const TranslucentAsset b = bakeAsset(options, nullptr, CancelToken{}, nullptr);
     writeBakedAsset(dir / "c", b, nullptr);
-    EXPECT_EQ(dir.list(), (std::vector<std::string>{"c.opal", "c.usda"}));
-    EXPECT_NE(test::readBytes(dir / "c.opal"), first);
+    const std::string second = test::sidecarNamedBy(dir / "c.usda");
+    EXPECT_NE(second, first) << "another seed is another bake";
+    EXPECT_EQ(dir.list(), (std::vector<std::string>{second, "c.usda"}));
     EXPECT_EQ(readAsset(dir / "c.usda").bake.seed, 2u);
 }
 

@@ -70,6 +70,18 @@ inline void writeText(const std::filesystem::path& path, const std::string& text
     if (!out) throw std::runtime_error("cannot write " + path.string());
 }
 
+// The sidecar file name a baked layer names in opal:sidecar ("candle.<bake id>.opal").
+inline std::string sidecarNamedBy(const std::filesystem::path& usda) {
+    const std::string text = readBytes(usda);
+    const std::string key = "opal:sidecar = @";
+    const std::size_t start = text.find(key);
+    if (start == std::string::npos) throw std::runtime_error(usda.string() + " names no sidecar");
+    const std::size_t end = text.find('@', start + key.size());
+    std::string name = text.substr(start + key.size(), end - start - key.size());
+    if (name.starts_with("./")) name.erase(0, 2);
+    return name;
+}
+
 inline std::string joined(const std::vector<std::string>& words) {
     std::string out;
     for (const std::string& w : words) out += (out.empty() ? "" : " ") + w;
@@ -82,7 +94,8 @@ class ChildProcess {
 public:
     using Clock = std::chrono::steady_clock;
 
-    explicit ChildProcess(const std::vector<std::string>& args) {
+    // `environment`: "NAME=value" entries added to the test's own environment.
+    explicit ChildProcess(const std::vector<std::string>& args, const std::vector<std::string>& environment = {}) {
         int out[2], err[2];
         if (pipe2(out, O_CLOEXEC) != 0 || pipe2(err, O_CLOEXEC) != 0) throw std::runtime_error("pipe2 failed");
         posix_spawn_file_actions_t actions;
@@ -105,7 +118,11 @@ public:
         std::vector<char*> argv;
         for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
         argv.push_back(nullptr);
-        const int rc = posix_spawn(&pid_, argv[0], &actions, &attr, argv.data(), environ);
+        std::vector<char*> envp;
+        for (char** e = environ; *e; ++e) envp.push_back(*e);
+        for (const std::string& e : environment) envp.push_back(const_cast<char*>(e.c_str()));
+        envp.push_back(nullptr);
+        const int rc = posix_spawn(&pid_, argv[0], &actions, &attr, argv.data(), envp.data());
         posix_spawn_file_actions_destroy(&actions);
         posix_spawnattr_destroy(&attr);
         close(out[1]);
@@ -130,6 +147,7 @@ public:
     ChildProcess& operator=(const ChildProcess&) = delete;
 
     bool running() const { return pid_ > 0 && !reaped_; }
+    pid_t pid() const { return pid_; }
     void signal(int sig) const {
         if (running()) kill(pid_, sig);
     }
@@ -231,15 +249,18 @@ private:
 // Runs a command to completion (bounded by `timeout`).
 struct RunResult {
     int exitCode = -1;  // -1: ended by a signal or timed out
+    int termSignal = 0;  // the signal that ended it, if one did
     bool timedOut = false;
     std::string out, err;
 };
 
-inline RunResult run(const std::vector<std::string>& args, std::chrono::seconds timeout = std::chrono::seconds(120)) {
-    ChildProcess child(args);
+inline RunResult run(const std::vector<std::string>& args, std::chrono::seconds timeout = std::chrono::seconds(120),
+                     const std::vector<std::string>& environment = {}) {
+    ChildProcess child(args, environment);
     RunResult r;
     r.timedOut = !child.wait(timeout);
     r.exitCode = child.exitCode();
+    r.termSignal = child.termSignal();
     r.out = child.out();
     r.err = child.err();
     return r;

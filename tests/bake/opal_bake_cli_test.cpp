@@ -53,7 +53,10 @@ TEST(OpalBakeCli, TwoBakesOfTheSameInputAreByteIdentical) {
     const test::RunResult b = bake(with(args, {"-o", (two / "candle").string()}));
     ASSERT_EQ(a.exitCode, 0) << a.err;
     ASSERT_EQ(b.exitCode, 0) << b.err;
-    for (const char* file : {"candle.usda", "candle.opal"}) {
+    const std::string sidecar = test::sidecarNamedBy(one / "candle.usda");
+    EXPECT_EQ(sidecar, test::sidecarNamedBy(two / "candle.usda"));
+    EXPECT_EQ(one.list(), (std::vector<std::string>{sidecar, "candle.usda"}));
+    for (const std::string& file : {std::string("candle.usda"), sidecar}) {
         const std::string x = test::readBytes(one / file), y = test::readBytes(two / file);
         EXPECT_GT(x.size(), 1000u) << file;
         EXPECT_TRUE(x == y) << file << " differs between two identical bakes";
@@ -113,7 +116,9 @@ TEST(OpalBakeCli, AValidTetrahedronBakes) {
     test::writeText(dir / "tetra.obj", std::string(kTetraVertices) + kTetraFaces);
     const test::RunResult r = bake(with({(dir / "tetra.obj").string(), "-o", (dir / "tetra").string(), "-q"}, kSmall));
     EXPECT_EQ(r.exitCode, 0) << r.err;
-    EXPECT_EQ(dir.list(), (std::vector<std::string>{"tetra.obj", "tetra.opal", "tetra.usda"}));
+    std::vector<std::string> expected = {"tetra.obj", test::sidecarNamedBy(dir / "tetra.usda"), "tetra.usda"};
+    std::sort(expected.begin(), expected.end());
+    EXPECT_EQ(dir.list(), expected);
 }
 
 TEST(OpalBakeCli, AFileNameThatIsNoPrimNameGivesAReadableAsset) {
@@ -179,7 +184,8 @@ TEST(OpalBakeCli, JsonReportHasEveryKeyWithConsistentValues) {
                                          (dir / "report.json").string(), "--quiet"},
                                         kSmall));
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    EXPECT_EQ(dir.list(), (std::vector<std::string>{"candle.opal", "candle.usda", "report.json"}));
+    const std::string sidecarName = test::sidecarNamedBy(dir / "candle.usda");
+    EXPECT_EQ(dir.list(), (std::vector<std::string>{sidecarName, "candle.usda", "report.json"}));
     const nlohmann::json j = nlohmann::json::parse(test::readBytes(dir / "report.json"));
     for (const char* key : {"samples", "charts", "grid", "subdivision_level", "render_vertices", "raw_bytes", "step1_bytes",
                             "step2_bytes", "sidecar_bytes", "compression_ratio", "energy_kept",
@@ -200,7 +206,8 @@ TEST(OpalBakeCli, JsonReportHasEveryKeyWithConsistentValues) {
     std::uint64_t nonZeros = 0;
     for (const SparseMatrix& m : asset.transfer.perBasis) nonZeros += m.nonZeros();
     EXPECT_EQ(j["step2_bytes"].get<std::uint64_t>(), nonZeros * 8);
-    const std::uint64_t sidecar = std::filesystem::file_size(dir / "candle.opal");
+    const std::uint64_t sidecar = std::filesystem::file_size(dir / sidecarName);
+    EXPECT_EQ(j["sidecar_file"].get<std::string>(), (dir / sidecarName).string());
     EXPECT_EQ(j["sidecar_bytes"].get<std::uint64_t>(), sidecar);
     EXPECT_DOUBLE_EQ(j["compression_ratio"].get<double>(), double(N * N * K * 4) / double(sidecar));
     const double energy = j["energy_kept"].get<double>();
@@ -294,14 +301,15 @@ TEST(OpalBakeCli, SigintDuringTheTransferExits130AndKeepsThePreviousAsset) {
     const ScratchDir dir;
     const test::RunResult first = bake(with({"builtin:candle", "-o", (dir / "candle").string(), "-q"}, kSmall));
     ASSERT_EQ(first.exitCode, 0) << first.err;
-    const std::string usda = test::readBytes(dir / "candle.usda"), opal = test::readBytes(dir / "candle.opal");
+    const std::string sidecar = test::sidecarNamedBy(dir / "candle.usda");
+    const std::string usda = test::readBytes(dir / "candle.usda"), opal = test::readBytes(dir / sidecar);
 
     const Interrupted r = interruptDuringTransfer(dir / "candle", SIGINT);
     EXPECT_EQ(r.termSignal, 0);
     EXPECT_EQ(r.exitCode, 130) << r.err;
-    EXPECT_EQ(dir.list(), (std::vector<std::string>{"candle.opal", "candle.usda"}));
+    EXPECT_EQ(dir.list(), (std::vector<std::string>{sidecar, "candle.usda"}));
     EXPECT_TRUE(test::readBytes(dir / "candle.usda") == usda);
-    EXPECT_TRUE(test::readBytes(dir / "candle.opal") == opal);
+    EXPECT_TRUE(test::readBytes(dir / sidecar) == opal);
     EXPECT_EQ(readAsset(dir / "candle.usda").samples.size(), 256u);
 }
 

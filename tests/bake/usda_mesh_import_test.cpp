@@ -565,7 +565,8 @@ TEST(UsdaMeshImport, CliBakesAUsdaCubeAndRebakesItsOwnAsset) {
     ASSERT_EQ(first.exitCode, 0) << first.err;
     const test::RunResult second = runBake({(dir / "baked.usda").string(), "-o", (dir / "again").string(), "-q"});
     ASSERT_EQ(second.exitCode, 0) << second.err;
-    EXPECT_EQ(dir.list(), (std::vector<std::string>{"again.opal", "again.usda", "baked.opal", "baked.usda", "cube.usda"}));
+    EXPECT_EQ(dir.list(), (std::vector<std::string>{test::sidecarNamedBy(dir / "again.usda"), "again.usda",
+                                                    test::sidecarNamedBy(dir / "baked.usda"), "baked.usda", "cube.usda"}));
 }
 
 }  // namespace

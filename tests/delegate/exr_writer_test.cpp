@@ -3,16 +3,20 @@
 #include "color_test_support.h"
 #include "delegate/color_config.h"
 #include "schema/error.h"
+#include "tests/support/restricted_child.h"
 
 #include <gtest/gtest.h>
 
 #include <OpenImageIO/imageio.h>
 
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
+#include <csignal>
+#include <cstring>
 #include <fstream>
 #include <map>
 
@@ -181,16 +185,61 @@ TEST(ExrWriter, UnwritableDirectoryThrowsWithThePathAndLeavesNothing) {
     EXPECT_EQ(dir.entries(), std::vector<std::string>{"not-a-directory"});
 }
 
+// Permissions do not bind root, and CI runs the tests as root: the write is tried by a
+// child that has dropped to the user nobody (it fails before any image library runs).
 TEST(ExrWriter, ReadOnlyDirectoryThrowsAndLeavesNothing) {
     TempDir dir;
+    ::chmod(dir.path().c_str(), 0755);
     std::filesystem::create_directory(dir / "locked");
     ::chmod((dir / "locked").c_str(), 0555);
-    if (::access((dir / "locked").c_str(), W_OK) == 0)
-        GTEST_SKIP() << "running as root: permissions do not apply";
-    EXPECT_THROW(
-        writeExr(dir / "locked/frame.exr", frameLayers(), shippedWorkingSpace(), {}, {}, nullptr),
-        Error);
+    const std::filesystem::path target = dir / "locked/frame.exr";
+    const std::vector<AovLayer> layers = frameLayers();
+    const ColorSpaceIdentity space = shippedWorkingSpace();
+    const test::ChildReport r = test::unprivileged([&] {
+        try {
+            writeExr(target, layers, space, {}, {}, nullptr);
+        } catch (const Error& e) {
+            return std::string(e.what());
+        }
+        return std::string("(no error)");
+    });
+    ASSERT_TRUE(r.ran) << r.text;
+    EXPECT_NE(r.text.find(target.string()), std::string::npos) << r.text;
+    EXPECT_NE(r.text.find("Permission denied"), std::string::npos) << r.text;
     EXPECT_TRUE(std::filesystem::is_empty(dir / "locked"));
+}
+
+// A file system that refuses more bytes halfway through the image (the process's file
+// size limit: writes past it fail with EFBIG, as they fail with ENOSPC on a full disk;
+// in-process, since the EXR library's threads would not survive a fork): the error names
+// the file and the cause, and the previous file is intact.
+TEST(ExrWriter, AWriteRefusedHalfwayKeepsThePreviousFileAndSaysWhy) {
+    TempDir dir;
+    const std::filesystem::path file = dir / "frame.exr";
+    const std::vector<AovLayer> small = {makeAovLayer("color", filled(4, 1))};
+    writeExr(file, small, shippedWorkingSpace(), {}, {ExrPixelType::Float, ExrCompression::Piz}, nullptr);
+    const auto previous = std::filesystem::file_size(file);
+
+    std::vector<AovLayer> big;
+    big.push_back(makeAovLayer("color", test::randomSceneLinear(512, 512, 4, 7, false)));
+    rlimit saved{};
+    ASSERT_EQ(::getrlimit(RLIMIT_FSIZE, &saved), 0);
+    const auto oldHandler = std::signal(SIGXFSZ, SIG_IGN);
+    const rlimit limit{previous + 4096, saved.rlim_max};
+    ASSERT_EQ(::setrlimit(RLIMIT_FSIZE, &limit), 0);
+    std::string message = "(no error)";
+    try {
+        writeExr(file, big, shippedWorkingSpace(), {}, {ExrPixelType::Float, ExrCompression::Piz}, nullptr);
+    } catch (const Error& e) {
+        message = e.what();
+    }
+    ::setrlimit(RLIMIT_FSIZE, &saved);
+    std::signal(SIGXFSZ, oldHandler);
+
+    EXPECT_NE(message.find(file.string()), std::string::npos) << message;
+    EXPECT_NE(message.find(std::strerror(EFBIG)), std::string::npos) << message;
+    EXPECT_EQ(dir.entries(), std::vector<std::string>{"frame.exr"}) << "the temporary file is removed";
+    expectPixels(readExr(file), small, false);
 }
 
 TEST(ExrWriter, InvalidAovDataLeavesThePreviousFileIntact) {

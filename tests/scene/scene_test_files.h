@@ -46,9 +46,14 @@ public:
         return file;
     }
 
-    // STEM.usda + STEM.opal: a 5 mm cube-sphere (6 x 4 x 4 samples), scene units = mm.
+    // STEM.usda + STEM.opal: a 5 mm cube-sphere (6 x 4 x 4 samples), scene units = mm,
+    // with a bake identifier in both halves as a bake writes it.
     std::filesystem::path writeSphereAsset(const std::string& stem) const {
-        static const std::shared_ptr<const TranslucentAsset> sphere = sphereAsset(2, 5.0f, 0);
+        static const std::shared_ptr<const TranslucentAsset> sphere = [] {
+            auto asset = std::make_shared<TranslucentAsset>(*sphereAsset(2, 5.0f, 0));
+            asset->bake.identifier = 0x5e1f0b5e55ed0001ull;
+            return asset;
+        }();
         writeSidecar(path_ / (stem + ".opal"), *sphere);
         writeAssetLayer(path_ / (stem + ".usda"), *sphere, "./" + stem + ".opal");
         return path_ / (stem + ".usda");
