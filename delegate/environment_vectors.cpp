@@ -16,6 +16,8 @@
 
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #define OPAL_ENVIRONMENT_VECTORS_AVX2 1
+#include "delegate/cpu_avx2.h"
+
 #include <immintrin.h>
 #else
 #define OPAL_ENVIRONMENT_VECTORS_AVX2 0
@@ -72,7 +74,7 @@ __attribute__((target("avx2,fma,f16c"))) void sampleAvx2(const Index* positions,
 EnvironmentVectors::EnvironmentVectors(const EnvironmentTransfer& transfer, std::size_t samples, bool useAvx2)
     : terms_(transfer.fresnelTerms), texels_(6u * transfer.cubeFaceSize * transfer.cubeFaceSize) {
 #if OPAL_ENVIRONMENT_VECTORS_AVX2
-    avx2_ = useAvx2 && __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") && __builtin_cpu_supports("f16c");
+    avx2_ = useAvx2 && cpuHasAvx2FmaF16c();
 #else
     (void)useAvx2;
 #endif

@@ -12,6 +12,8 @@
 
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #define OPAL_TRANSFER_PRODUCT_AVX2 1
+#include "delegate/cpu_avx2.h"
+
 #include <immintrin.h>
 #else
 #define OPAL_TRANSFER_PRODUCT_AVX2 0
@@ -91,9 +93,7 @@ __attribute__((target("avx2,fma,f16c"))) void productRowAvx2(const std::uint64_t
     std::copy_n(sum, C, y);
 }
 
-bool cpuHasAvx2Kernel() {
-    return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") && __builtin_cpu_supports("f16c");
-}
+bool cpuHasAvx2Kernel() { return cpuHasAvx2FmaF16c(); }
 #else
 bool cpuHasAvx2Kernel() { return false; }
 #endif

@@ -28,14 +28,18 @@ void insertAt(const usda::SourceLocation& where, const hd::SdfPath& id, Insert&&
 }  // namespace
 
 void UsdaSceneSource::populate(hd::RenderIndex& index) const {
-    for (const auto& [id, material] : scene_.materials)
-        insertAt(material.where, id, [&] { index.insertSprim(hd::PrimType::Material, *this, id); });
-    for (const auto& [id, camera] : scene_.cameras)
-        insertAt(camera.where, id, [&] { index.insertSprim(hd::PrimType::Camera, *this, id); });
-    for (const auto& [id, light] : scene_.lights)
-        insertAt(light.where, id, [&] { index.insertSprim(light.primType, *this, id); });
-    for (const auto& [id, mesh] : scene_.meshes)
-        insertAt(mesh.where, id, [&] { index.insertRprim(hd::PrimType::TranslucentMesh, *this, id); });
+    // Map entries, not structured bindings: clang 14 cannot capture bindings in lambdas.
+    for (const auto& entry : scene_.materials)
+        insertAt(entry.second.where, entry.first,
+                 [&] { index.insertSprim(hd::PrimType::Material, *this, entry.first); });
+    for (const auto& entry : scene_.cameras)
+        insertAt(entry.second.where, entry.first, [&] { index.insertSprim(hd::PrimType::Camera, *this, entry.first); });
+    for (const auto& entry : scene_.lights)
+        insertAt(entry.second.where, entry.first,
+                 [&] { index.insertSprim(entry.second.primType, *this, entry.first); });
+    for (const auto& entry : scene_.meshes)
+        insertAt(entry.second.where, entry.first,
+                 [&] { index.insertRprim(hd::PrimType::TranslucentMesh, *this, entry.first); });
 }
 
 hd::MeshDesc UsdaSceneSource::mesh(const hd::SdfPath& id) const {

@@ -1,12 +1,18 @@
 #include "schema/usd/usda_lexer.h"
 
 #include "schema/usd/usda_error.h"
+#include "schema/usd/utf8.h"
 
 #include <cctype>
 #include <cstring>
 
 namespace opal::usda {
 namespace {
+
+struct Unescaped {
+    std::size_t offset = 0;
+    bool badEscape = false;
+};
 
 bool isDigit(char c) { return c >= '0' && c <= '9'; }
 bool isAlpha(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
@@ -60,6 +66,28 @@ std::size_t decodeEscape(std::string_view s, std::size_t i, std::string& out) {
     }
     out += static_cast<char>(value);
     return (start - i) + n;
+}
+
+// Resolves the escapes of a string's body into out until out holds more than `limit`
+// bytes. Returns the offset in body of the piece (character or escape) that produced
+// out[limit], body.size() when the body ran out first, or a bad escape's backslash.
+Unescaped unescape(std::string_view body, std::string& out, std::size_t limit) {
+    for (std::size_t i = 0; i < body.size(); ++i) {
+        std::size_t piece = i;
+        if (body[i] != '\\') {
+            out += body[i];
+        } else {
+            std::size_t used = i + 1 < body.size() ? decodeEscape(body, i + 1, out) : 0;
+            if (used == 0) {
+                return {i, true};
+            }
+            i += used;
+        }
+        if (out.size() > limit) {
+            return {piece, false};
+        }
+    }
+    return {body.size(), false};
 }
 
 }  // namespace
@@ -170,7 +198,7 @@ Token Lexer::scan() {
     } else if (c == '<') {
         t.kind = TokenKind::Path;
         scanPath(t);
-    } else if (std::strchr("()[]{},=;.:", c) != nullptr) {
+    } else if (c != '\0' && std::strchr("()[]{},=;.:", c) != nullptr) {  // strchr finds the terminator
         t.kind = TokenKind::Punct;
         ++pos_;
     } else {
@@ -266,17 +294,15 @@ std::string Lexer::decodeString(const Token& t) const {
     std::string_view body = t.text.substr(delimiter, t.text.size() - 2 * delimiter);
     std::string out;
     out.reserve(body.size());
-    for (std::size_t i = 0; i < body.size(); ++i) {
-        if (body[i] != '\\') {
-            out += body[i];
-            continue;
-        }
-        std::size_t used = i + 1 < body.size() ? decodeEscape(body, i + 1, out) : 0;
-        if (used == 0) {
-            fail(t, "invalid escape sequence '\\" + (i + 1 < body.size() ? printable(body[i + 1]) : "") +
-                        "' in string");
-        }
-        i += used;
+    Unescaped done = unescape(body, out, std::string::npos);
+    if (done.badEscape) {
+        std::size_t i = done.offset;
+        fail(t, "invalid escape sequence '\\" + (i + 1 < body.size() ? printable(body[i + 1]) : "") + "' in string");
+    }
+    if (std::size_t bad = firstBadTextByte(out); bad != std::string::npos) {
+        std::string probe;
+        std::size_t source = unescape(body, probe, bad).offset;
+        failInText(t, delimiter + source, out, bad, "string");
     }
     return out;
 }
@@ -285,6 +311,10 @@ std::string Lexer::decodeAsset(const Token& t) const {
     bool triple = t.text.starts_with("@@@") && t.text.size() >= 6;
     std::size_t delimiter = triple ? 3 : 1;
     std::string_view body = t.text.substr(delimiter, t.text.size() - 2 * delimiter);
+    // Escapes (\@@@) only produce '@', so the raw body is clean exactly when the path is.
+    if (std::size_t bad = firstBadTextByte(body); bad != std::string::npos) {
+        failInText(t, delimiter + bad, body, bad, "asset path");
+    }
     std::string out;
     for (std::size_t i = 0; i < body.size(); ++i) {
         if (triple && body.substr(i).starts_with("\\@@@")) {
@@ -295,6 +325,22 @@ std::string Lexer::decodeAsset(const Token& t) const {
         }
     }
     return out;
+}
+
+void Lexer::failInText(const Token& t, std::size_t offset, std::string_view text, std::size_t bad,
+                       std::string_view what) const {
+    Token at = t;
+    for (std::size_t i = 0; i < offset; ++i) {
+        if (t.text[i] == '\n') {
+            ++at.line;
+            at.column = 0;
+        }
+        ++at.column;
+    }
+    if (text[bad] == '\0') {
+        fail(at, std::string(what) + " contains a NUL byte");
+    }
+    fail(at, std::string(what) + " is not valid UTF-8 (byte " + printable(text[bad]) + ")");
 }
 
 }  // namespace opal::usda

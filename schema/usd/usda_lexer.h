@@ -43,7 +43,9 @@ public:
     // "unexpected '}', expected '='"
     [[noreturn]] void unexpected(const Token& t, std::string_view expected) const;
 
-    // The contents of String, Asset and Path tokens, escapes resolved.
+    // The contents of String, Asset and Path tokens, escapes resolved. Strings and asset
+    // paths must be well-formed UTF-8 without NUL bytes (escaped or not); the error names
+    // the line and column of the offending byte or escape.
     std::string decodeString(const Token& t) const;
     std::string decodeAsset(const Token& t) const;
     std::string_view pathText(const Token& t) const { return t.text.substr(1, t.text.size() - 2); }
@@ -57,6 +59,9 @@ private:
     void scanString(const Token& start);
     void scanAsset(const Token& start);
     void scanPath(const Token& start);
+    // Fails at t.text[offset], saying what is wrong with text[bad] (NUL or not UTF-8).
+    [[noreturn]] void failInText(const Token& t, std::size_t offset, std::string_view text, std::size_t bad,
+                                 std::string_view what) const;
     char at(std::size_t i) const { return i < text_.size() ? text_[i] : '\0'; }
     int column() const { return static_cast<int>(pos_ - lineStart_) + 1; }
 

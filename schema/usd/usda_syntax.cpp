@@ -1,5 +1,7 @@
 #include "schema/usd/usda_syntax.h"
 
+#include "schema/usd/utf8.h"
+
 #include <algorithm>
 #include <cctype>
 #include <charconv>
@@ -35,27 +37,6 @@ std::size_t parentPrefixLength(std::string_view s) {
         }
     }
     return n;
-}
-
-// Returns the length of a valid UTF-8 multi-byte sequence at s, or 0.
-int utf8SequenceLength(std::string_view s) {
-    auto highBits = [](int n) { return static_cast<unsigned char>(((1 << n) - 1) << (8 - n)); };
-    auto c0 = static_cast<unsigned char>(s[0]);
-    for (int n = 2; n <= 4; ++n) {
-        if ((c0 & highBits(n + 1)) != highBits(n)) {
-            continue;
-        }
-        if (s.size() < static_cast<std::size_t>(n)) {
-            return 0;
-        }
-        for (int j = 1; j < n; ++j) {
-            if ((static_cast<unsigned char>(s[j]) & 0xC0) != 0x80) {
-                return 0;
-            }
-        }
-        return n;
-    }
-    return 0;
 }
 
 void appendEscaped(std::string& out, char c, char quote, bool triple) {
@@ -204,7 +185,7 @@ std::string quoteString(std::string_view s) {
     bool triple = s.find('\n') != std::string_view::npos;
     std::string out(triple ? 3 : 1, quote);
     for (std::size_t i = 0; i < s.size(); ++i) {
-        if (int n = utf8SequenceLength(s.substr(i)); n > 0) {
+        if (int n = utf8SequenceLength(s.substr(i)); n > 1) {
             out += s.substr(i, static_cast<std::size_t>(n));
             i += static_cast<std::size_t>(n) - 1;
         } else {

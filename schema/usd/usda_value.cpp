@@ -13,6 +13,9 @@ Dictionary& Dictionary::operator=(const Dictionary&) = default;
 Dictionary& Dictionary::operator=(Dictionary&&) noexcept = default;
 Dictionary::~Dictionary() = default;
 
+bool Dictionary::empty() const { return entries_.empty(); }
+std::size_t Dictionary::size() const { return entries_.size(); }
+
 std::vector<DictionaryEntry>::iterator Dictionary::lowerBound(std::string_view key) {
     return std::lower_bound(entries_.begin(), entries_.end(), key,
                             [](const DictionaryEntry& e, std::string_view k) { return e.key < k; });

@@ -38,8 +38,9 @@ public:
     bool erase(std::string_view key);
 
     const std::vector<DictionaryEntry>& entries() const { return entries_; }
-    bool empty() const { return entries_.empty(); }
-    std::size_t size() const { return entries_.size(); }
+    // Out of line: DictionaryEntry is incomplete here, and clang instantiates inline uses.
+    bool empty() const;
+    std::size_t size() const;
 
     friend bool operator==(const Dictionary& a, const Dictionary& b);
 

@@ -95,7 +95,7 @@ Value ValueParser::parseTyped(bool isArray, int depth, SourceLocation where) {
     if constexpr (S == ScalarType::Dictionary) {
         lex_.fail(lex_.peek(), "dictionary arrays are not supported");
     } else {
-        constexpr ValueType arrayType{S, true};
+        static constexpr ValueType arrayType{S, true};  // static: captureless lambdas below name it
         expect('[', [] { return "'[' to start a value of type " + typeName(arrayType); });
         std::vector<Element> elements;
         while (!lex_.peek().is(']')) {

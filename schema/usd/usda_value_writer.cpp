@@ -2,6 +2,7 @@
 
 #include "schema/error.h"
 #include "schema/usd/usda_syntax.h"
+#include "schema/usd/utf8.h"
 
 #include <cmath>
 #include <type_traits>
@@ -42,6 +43,12 @@ private:
     }
 
     void element(const std::string& s, int) {
+        // The reader refuses such text, so writing it would make a layer Opal cannot read back.
+        if (std::size_t bad = firstBadTextByte(s); bad != std::string::npos) {
+            throw opal::Error("cannot write " + std::string(context_) + ": text holds " +
+                              (s[bad] == '\0' ? "a NUL byte" : "bytes that are not valid UTF-8") + " at byte " +
+                              std::to_string(bad));
+        }
         if (type_.scalar != ScalarType::Asset) {
             out_ += quoteString(s);
             return;

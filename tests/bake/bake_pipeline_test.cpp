@@ -297,8 +297,7 @@ TEST_F(ExactCandle, ErrorGrowsAsEitherStepKeepsLess) {
 void expectSamplesCoverTheLimitSurface(const TranslucentAsset& a, double limitArea, double limitVolume,
                                        const Imath::V3f& centre) {
     double areaSum = 0.0;
-    Imath::V3d divergence(0.0);  // (1/3) sum A n.x = enclosed volume for outward normals
-    double volume = 0.0;
+    double volume = 0.0;  // (1/3) sum A n.x = enclosed volume for outward normals
     std::size_t inward = 0;
     for (const SurfaceSample& s : a.samples) {
         areaSum += s.area;

@@ -3,6 +3,7 @@
 // what was expected. Positions in this table were counted by hand.
 #include "schema/usd/usda_error.h"
 #include "schema/usd/usda_reader.h"
+#include "schema/usd/usda_writer.h"
 
 #include <gtest/gtest.h>
 
@@ -24,6 +25,7 @@ const std::string kNote = " (Opal's USDA subset: see schema/usd/SUBSET.md)";
 std::string inBody(const std::string& body) { return H + "def \"A\"\n{\n" + body + "\n}\n"; }
 // A prim "A" whose metadata block holds `metadata` (its lines start on line 3).
 std::string inMetadata(const std::string& metadata) { return H + "def \"A\" (\n" + metadata + "\n)\n{\n}\n"; }
+const std::string NUL(1, '\0');
 
 std::vector<ErrorCase> errorCases() {
     return {
@@ -121,6 +123,32 @@ std::vector<ErrorCase> errorCases() {
         {"PrimNameNotIdentifier", H + "def \"a b\"\n{\n}\n",
          "2:5: prim name 'a b' is not an identifier ([A-Za-z_][A-Za-z0-9_]*)"},
         {"PrimWithoutName", H + "def Xform\n{\n}\n", "3:1: unexpected '{', expected a quoted prim name"},
+        // Text: strings, tokens, names and asset paths are well-formed UTF-8 without NUL.
+        {"RawNulInString", inBody("    string s = \"a" + NUL + "b\""), "4:18: string contains a NUL byte"},
+        {"EscapedNulInString", inBody("    string s = \"ab\\0\""), "4:19: string contains a NUL byte"},
+        {"HexNulInToken", inBody("    token t = \"\\x00\""), "4:16: string contains a NUL byte"},
+        {"NulOnSecondLineOfDoc", inMetadata("    doc = \"\"\"first\nse" + NUL + "\"\"\""),
+         "4:3: string contains a NUL byte"},
+        {"EscapedNulOnSecondLineOfDoc", inMetadata("    doc = \"\"\"first\nse\\x00\"\"\""),
+         "4:3: string contains a NUL byte"},
+        {"LoneByteInString", inBody("    string s = \"ok\xff\""), "4:19: string is not valid UTF-8 (byte \\xff)"},
+        {"EscapedLoneByte", inBody("    string s = \"ok\\xe9\""), "4:19: string is not valid UTF-8 (byte \\xe9)"},
+        {"OverlongSlash", inBody("    token t = \"\xc0\xaf\""), "4:16: string is not valid UTF-8 (byte \\xc0)"},
+        {"Surrogate", inBody("    string s = \"\xed\xa0\x80\""), "4:17: string is not valid UTF-8 (byte \\xed)"},
+        {"AboveU10FFFF", inBody("    string s = \"\xf4\x90\x80\x80\""), "4:17: string is not valid UTF-8 (byte \\xf4)"},
+        {"TruncatedSequenceInArray", inBody("    token[] t = [\"a\", \"b\xc3\"]"),
+         "4:25: string is not valid UTF-8 (byte \\xc3)"},
+        {"NulInAssetPath", inBody("    asset a = @a" + NUL + ".usda@"), "4:17: asset path contains a NUL byte"},
+        {"LoneByteInTripleAssetPath", inBody("    asset a = @@@x\xfe@@@"),
+         "4:19: asset path is not valid UTF-8 (byte \\xfe)"},
+        {"LoneByteInReference", inMetadata("    references = @\xe9.usda@"),
+         "3:19: asset path is not valid UTF-8 (byte \\xe9)"},
+        {"LoneByteInPrimName", H + "def \"A\xff\"\n{\n}\n", "2:7: string is not valid UTF-8 (byte \\xff)"},
+        {"LoneByteInLayerComment", H + "(\n    \"c\xff\"\n)\n", "3:7: string is not valid UTF-8 (byte \\xff)"},
+        {"NulInDictionaryKey", inMetadata("    customData = {\n        int \"k" + NUL + "\" = 1\n    }"),
+         "4:15: string contains a NUL byte"},
+        {"NulInIdentifier", inBody("    int x" + NUL + " = 1"), "4:10: unexpected character '\\x00'"},
+        {"LoneByteInIdentifier", inBody("    int x\xff = 1"), "4:10: unexpected character '\\xff'"},
         {"ApiSchemasWithoutBrackets", inMetadata("    apiSchemas = \"A\""),
          "3:18: unexpected string \"A\", expected '[' to start a list of quoted names, or None"},
     };
@@ -138,6 +166,22 @@ std::string errorOf(const std::string& text) {
 TEST(UsdaErrors, EachCaseFailsAtTheExpectedPositionWithTheExpectedMessage) {
     for (const ErrorCase& c : errorCases()) {
         EXPECT_EQ(errorOf(c.text), "t.usda:" + c.message) << c.name;
+    }
+}
+
+TEST(UsdaErrors, WellFormedUtf8ReadsBackUnchanged) {
+    Layer layer = readUsda(inBody("    string s = \"caf\xc3\xa9 \xe2\x82\xac \xf0\x9f\x95\xaf\\xc3\\xa9\""), "t.usda");
+    EXPECT_EQ(layer.prim("/A").attribute("s").get<types::String>(), "caf\xc3\xa9 \xe2\x82\xac \xf0\x9f\x95\xaf\xc3\xa9");
+}
+
+TEST(UsdaErrors, WriterRefusesTextTheReaderWouldRefuse) {
+    for (const std::string& bad : {"a" + NUL + "b", std::string("lone \xe9 byte")}) {
+        Layer layer;
+        Prim prim;
+        prim.name = "A";
+        prim.addAttribute("s", Value::make<types::String>(bad));
+        layer.rootPrims.push_back(prim);
+        EXPECT_THROW(writeUsda(layer), opal::Error) << bad;
     }
 }
 

@@ -182,11 +182,11 @@ TEST(UsdaValue, StringsAreQuotedAsSdfQuotesThem) {
 
 TEST(UsdaValue, EscapesReadBack) {
     Layer layer = readUsda(
-        "#usda 1.0\ndef \"S\" {\n string[] s = [\"a\\tb\", 'q\\'s', \"\\x41\\101\\0\", \"\"\"x\n\\\"y\"\"\"]\n"
+        "#usda 1.0\ndef \"S\" {\n string[] s = [\"a\\tb\", 'q\\'s', \"\\x41\\101\\xc3\\xa9\", \"\"\"x\n\\\"y\"\"\"]\n"
         " asset[] a = [@@@a\\@@@b@@@, @@@c@@@@, @@@d@@@]\n}\n",
         "s.usda");
     EXPECT_EQ(layer.prim("/S").attribute("s").get<types::StringArray>(),
-              (std::vector<std::string>{"a\tb", "q's", std::string("AA\0", 3), "x\n\"y"}));
+              (std::vector<std::string>{"a\tb", "q's", "AA\xc3\xa9", "x\n\"y"}));
     EXPECT_EQ(layer.prim("/S").attribute("a").get<types::AssetArray>(),
               (std::vector<std::string>{"a@@@b", "c@", "d"}));
 }
