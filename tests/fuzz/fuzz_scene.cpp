@@ -1,5 +1,5 @@
 // The scene reader opal-render uses (examples/scene) on arbitrary scene text. The text is
-// written as scene.usda beside a tiny baked asset, candle.usda + candle.opal (the example
+// written as scene.usda beside a tiny baked asset, candle.usda and its sidecar (the example
 // scene's reference), so references reach the asset reader. Inputs that could name a file
 // outside that folder (an absolute asset path or "..") are skipped. Anything but
 // opal::Error escaping readScene is a finding.
@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <string>
 #include <string_view>
 
 namespace {
@@ -22,8 +23,11 @@ bool mayLeaveTheFolder(std::string_view text) {
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
     const std::filesystem::path assets = std::filesystem::path(OPAL_SOURCE_DIR) / "tests/fuzz/assets";
-    for (const char* file : {"candle.usda", "candle.opal"}) {
-        std::filesystem::copy_file(assets / file, opal::fuzz::scratch().dir() / file,
+    // candle.usda and the sidecar it names (candle.<bake id>.opal, or a legacy candle.opal).
+    for (const auto& entry : std::filesystem::directory_iterator(assets)) {
+        const std::string file = entry.path().filename().string();
+        if (file.rfind("candle.", 0) != 0) continue;
+        std::filesystem::copy_file(entry.path(), opal::fuzz::scratch().dir() / file,
                                    std::filesystem::copy_options::overwrite_existing);
     }
     return 0;
