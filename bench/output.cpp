@@ -1,6 +1,6 @@
 #include "bench/output.h"
 
-#include "delegate/atomic_write.h"
+#include "delegate/output/atomic_write.h"
 #include "schema/usd/atomic_file.h"
 
 #include <stdexcept>

@@ -2,9 +2,9 @@
 
 #include "bench/cpu_time.h"
 #include "bench/relight_scene.h"
-#include "delegate/reference_gather.h"
-#include "delegate/stopwatch.h"
-#include "delegate/relight_engine.h"
+#include "delegate/relight/reference_gather.h"
+#include "delegate/relight/stopwatch.h"
+#include "delegate/relight/relight_engine.h"
 
 #include <algorithm>
 #include <numeric>

@@ -6,7 +6,7 @@
 //                        Embree shadow rays, or the dome's re-projection)
 //   every edit           the exact E(x_i; eta) (F_t(eta, .) per analytic light)
 //                        L(x_o) = (1/pi) sum_i R_d(|x_o - x_i|) A_i E(x_i)   for every x_o
-//                        (delegate/reference_gather.h: O(N) per output, O(N^2) in all)
+//                        (delegate/relight/reference_gather.h: O(N) per output, O(N^2) in all)
 //                        L and E interpolated to the render-mesh vertices
 //
 // The gather may be run on a random subset of the outputs and scaled to all of them: its
@@ -14,8 +14,8 @@
 // other steps always run in full.
 #pragma once
 
-#include "delegate/environment_light.h"
-#include "delegate/mesh_irradiance.h"
+#include "delegate/relight/environment_light.h"
+#include "delegate/relight/mesh_irradiance.h"
 #include "raytrace/ray_scene.h"
 
 #include <cstdint>

@@ -1,6 +1,6 @@
 #include "delegate/dome_texture.h"
 
-#include "delegate/light_emission.h"
+#include "delegate/relight/light_emission.h"
 #include "schema/error.h"
 
 #include <OpenImageIO/imageio.h>

@@ -5,8 +5,8 @@
 // map, which the light's color and intensity scale (UsdLux).
 #pragma once
 
-#include "delegate/color_config.h"
-#include "delegate/environment_light.h"
+#include "delegate/output/color_config.h"
+#include "delegate/relight/environment_light.h"
 
 #include <map>
 #include <memory>

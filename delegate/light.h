@@ -4,9 +4,9 @@
 // commitResources recomputes E only for the lights whose version changed (DESIGN.md s.6).
 #pragma once
 
-#include "delegate/analytic_light.h"
+#include "delegate/relight/analytic_light.h"
 #include "delegate/dome_texture.h"
-#include "delegate/environment_light.h"
+#include "delegate/relight/environment_light.h"
 #include "delegate/hd/prim.h"
 #include "delegate/prim_version.h"
 

@@ -9,12 +9,12 @@
 // from one thread (each is parallel inside).
 #pragma once
 
-#include "delegate/commit_stats.h"
+#include "delegate/relight/commit_stats.h"
 #include "delegate/dome_texture.h"
 #include "delegate/hd/render_delegate.h"
 #include "delegate/prim_version.h"
 #include "delegate/render_settings.h"
-#include "delegate/renderer.h"
+#include "delegate/image/renderer.h"
 
 #include <map>
 #include <memory>

@@ -1,8 +1,9 @@
 #include "delegate/render_pass.h"
 
 #include "delegate/camera.h"
+#include "delegate/image/camera_view.h"
 #include "delegate/render_delegate.h"
-#include "delegate/renderer.h"
+#include "delegate/image/renderer.h"
 #include "schema/error.h"
 
 #include <algorithm>

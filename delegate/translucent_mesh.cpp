@@ -1,7 +1,7 @@
 #include "delegate/translucent_mesh.h"
 
-#include "delegate/reference_gather.h"
-#include "delegate/stopwatch.h"
+#include "delegate/relight/reference_gather.h"
+#include "delegate/relight/stopwatch.h"
 #include "schema/error.h"
 
 

@@ -14,11 +14,11 @@
 // An invisible mesh computes nothing and is relit in full when shown again.
 #pragma once
 
-#include "delegate/commit_stats.h"
+#include "delegate/relight/commit_stats.h"
 #include "delegate/hd/prim.h"
-#include "delegate/mesh_irradiance.h"
-#include "delegate/relight_engine.h"
-#include "delegate/renderer.h"
+#include "delegate/relight/mesh_irradiance.h"
+#include "delegate/relight/relight_engine.h"
+#include "delegate/image/renderer.h"
 
 #include <cstdint>
 #include <map>

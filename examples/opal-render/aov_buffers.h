@@ -3,7 +3,7 @@
 // repeat color's). The preview needs color: it is rendered even when the EXR leaves it out.
 #pragma once
 
-#include "delegate/aov_layer.h"
+#include "delegate/output/aov_layer.h"
 #include "delegate/hd/render_pass.h"
 
 #include <memory>

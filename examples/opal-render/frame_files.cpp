@@ -1,7 +1,7 @@
 #include "examples/opal-render/frame_files.h"
 
-#include "delegate/atomic_write.h"
-#include "delegate/preview_writer.h"
+#include "delegate/output/atomic_write.h"
+#include "delegate/output/preview_writer.h"
 #include "schema/error.h"
 
 #include <algorithm>

@@ -4,9 +4,9 @@
 // (atomically), then the EXR is renamed into place, so a failure leaves no new EXR.
 #pragma once
 
-#include "delegate/aov_layer.h"
-#include "delegate/display_transform.h"
-#include "delegate/exr_writer.h"
+#include "delegate/output/aov_layer.h"
+#include "delegate/output/display_transform.h"
+#include "delegate/output/exr_writer.h"
 
 #include <filesystem>
 #include <optional>

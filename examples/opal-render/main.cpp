@@ -1,7 +1,7 @@
 // opal-render: renders a scene layer (examples/SCENES.md) through a render delegate found by
 // the plugin registry into a scene-linear multi-layer EXR, plus an optional display-referred
 // preview. Exit codes: 0 success, 1 error (nothing written), 2 bad command line.
-#include "delegate/aov_layer.h"
+#include "delegate/output/aov_layer.h"
 #include "examples/opal-render/render_command.h"
 #include "examples/scene/scene_material.h"
 #include "schema/error.h"

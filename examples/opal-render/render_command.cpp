@@ -1,7 +1,7 @@
 #include "examples/opal-render/render_command.h"
 
-#include "delegate/color_config.h"
-#include "delegate/display_transform.h"
+#include "delegate/output/color_config.h"
+#include "delegate/output/display_transform.h"
 #include "delegate/hd/render_index.h"
 #include "examples/opal-render/aov_buffers.h"
 #include "examples/opal-render/frame_files.h"

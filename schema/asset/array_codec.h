@@ -39,7 +39,7 @@ std::vector<float> readFloatPlanes(ChunkSource& source, std::uint64_t count, std
 void writeHalfPlanes(ChunkSink& sink, std::span<const float> values);
 // The half planes' e: max |v| 2^-e in (2^14, 2^15], so every value keeps 11 significant
 // bits down to 2^-14 of 2^15 (0 for all zeros or a non-finite maximum). Also what the
-// delegate's binary16 working copies scale by (delegate/scaled_half.h).
+// delegate's binary16 working copies scale by (delegate/relight/scaled_half.h).
 int halfScaleExponent(std::span<const float> values);
 std::vector<float> readHalfPlanes(ChunkSource& source, std::uint64_t count, std::string_view what);
 // Replaces each value by what writeHalfPlanes followed by readHalfPlanes gives back, so a

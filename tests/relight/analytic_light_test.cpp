@@ -1,6 +1,6 @@
-#include "delegate/analytic_light.h"
+#include "delegate/relight/analytic_light.h"
 
-#include "delegate/fresnel_response.h"
+#include "delegate/relight/fresnel_response.h"
 #include "raytrace/ray_scene.h"
 #include "schema/error.h"
 #include "schema/scatter/dipole.h"

@@ -1,7 +1,7 @@
-#include "delegate/environment_light.h"
-#include "delegate/environment_vectors.h"
+#include "delegate/relight/environment_light.h"
+#include "delegate/relight/environment_vectors.h"
 
-#include "delegate/mesh_irradiance.h"
+#include "delegate/relight/mesh_irradiance.h"
 #include "schema/error.h"
 #include "synthetic_asset.h"
 

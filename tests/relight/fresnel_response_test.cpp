@@ -1,4 +1,4 @@
-#include "delegate/fresnel_response.h"
+#include "delegate/relight/fresnel_response.h"
 
 #include "schema/error.h"
 #include "schema/scatter/dipole.h"

@@ -1,7 +1,7 @@
 // The renderer's lat-long lookups against libm and LatLongMap::coordinates.
-#include "delegate/lat_long_lookup.h"
+#include "delegate/image/lat_long_lookup.h"
 
-#include "delegate/environment_light.h"
+#include "delegate/relight/environment_light.h"
 
 #include <gtest/gtest.h>
 

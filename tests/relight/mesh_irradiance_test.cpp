@@ -1,7 +1,7 @@
-#include "delegate/mesh_irradiance.h"
+#include "delegate/relight/mesh_irradiance.h"
 
 #include "raytrace/ray_scene.h"
-#include "delegate/relight_engine.h"
+#include "delegate/relight/relight_engine.h"
 #include "schema/error.h"
 #include "synthetic_asset.h"
 

@@ -1,8 +1,8 @@
-#include "delegate/reference_gather.h"
+#include "delegate/relight/reference_gather.h"
 
-#include "delegate/mesh_irradiance.h"
+#include "delegate/relight/mesh_irradiance.h"
 #include "raytrace/ray_scene.h"
-#include "delegate/relight_engine.h"
+#include "delegate/relight/relight_engine.h"
 #include "schema/error.h"
 #include "schema/scatter/dipole.h"
 #include "synthetic_asset.h"

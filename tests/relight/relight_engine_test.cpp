@@ -1,4 +1,4 @@
-#include "delegate/relight_engine.h"
+#include "delegate/relight/relight_engine.h"
 
 #include "schema/error.h"
 #include "synthetic_asset.h"

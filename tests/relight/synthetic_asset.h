@@ -3,7 +3,7 @@
 // counts, and the compressed transfer computed by brute force from the dense T_k.
 #pragma once
 
-#include "delegate/irradiance.h"
+#include "delegate/relight/irradiance.h"
 #include "schema/asset/cube_map.h"
 #include "schema/asset/translucent_asset.h"
 #include "schema/scatter/fresnel_moments.h"

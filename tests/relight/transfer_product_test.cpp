@@ -1,5 +1,5 @@
 // TransferProduct: the compact working copy of the transfer against the asset's floats.
-#include "delegate/transfer_product.h"
+#include "delegate/relight/transfer_product.h"
 
 #include "schema/error.h"
 

@@ -1,4 +1,4 @@
-#include "delegate/camera.h"
+#include "delegate/image/camera_view.h"
 
 #include "schema/error.h"
 #include "tests/render/render_scene.h"

@@ -1,6 +1,6 @@
 // DomeLookup: the vectorized kernel against the portable path, and the portable path
 // against the map looked up at libm's exact coordinates.
-#include "delegate/dome_lookup.h"
+#include "delegate/image/dome_lookup.h"
 
 #include "schema/error.h"
 

@@ -165,7 +165,7 @@ TEST(Dome, TexturesAreConvertedToTheWorkingSpace) {
     hd::LightDesc dome = uniformDome({1.0, 1.0, 1.0});
     dome.textureFile = dir / "sky.exr";
     dome.textureColorSpace = "Linear Rec.709 (sRGB)";
-    const std::string shipped = std::string(OPAL_SOURCE_DIR) + "/delegate/ocio/config.ocio";
+    const std::string shipped = std::string(OPAL_SOURCE_DIR) + "/delegate/output/ocio/config.ocio";
     DomeScene s(dome, {{"opal:ocioConfig", shipped}});
     const test::Aovs a = s.render();
     // Linear Rec.709 -> ACEScg (the shipped config's scene_linear), Bradford D65 -> D60.

@@ -1,4 +1,4 @@
-#include "delegate/fresnel_table.h"
+#include "delegate/image/fresnel_table.h"
 
 #include "schema/error.h"
 #include "schema/scatter/dipole.h"

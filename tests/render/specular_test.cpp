@@ -1,4 +1,4 @@
-#include "delegate/specular.h"
+#include "delegate/image/specular.h"
 
 #include "schema/scatter/dipole.h"
 

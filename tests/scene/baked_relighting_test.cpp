@@ -13,10 +13,10 @@
 // lossless bake gives exactly that sum is checked on smaller bakes (a lossless bake of
 // 2,048 samples costs ~8 s; the sum well under one).
 #include "bake/bake_pipeline.h"
-#include "delegate/mesh_irradiance.h"
+#include "delegate/relight/mesh_irradiance.h"
 #include "raytrace/ray_scene.h"
-#include "delegate/reference_gather.h"
-#include "delegate/relight_engine.h"
+#include "delegate/relight/reference_gather.h"
+#include "delegate/relight/relight_engine.h"
 #include "tests/bake/bake_test_support.h"
 #include "tests/bake/test_meshes.h"
 
@@ -230,7 +230,7 @@ TEST(BakedRelighting, SphereMatchesTheExactGatherWithinOnePercent) { expectWithi
 TEST(BakedRelighting, TorusMatchesTheExactGatherWithinOnePercent) { expectWithinOnePercent(torus()); }
 
 // The engine on a lossless bake (keep 1, energy 1) is the direct sum above up to the
-// binary16 rounding of its working transfer (delegate/transfer_product.h: 2^-11 per entry,
+// binary16 rounding of its working transfer (delegate/relight/transfer_product.h: 2^-11 per entry,
 // measured 5e-4 to 8e-4 relative RMSE after the Haar domain's cancellations), so the
 // "basis alone" numbers are the lossless bake's. 512 samples (2 charts
 // of 16 x 16) keep the dense bake cheap.

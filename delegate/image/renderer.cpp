@@ -1,0 +1,446 @@
+#include "delegate/image/renderer.h"
+
+#include "delegate/image/dome_lookup.h"
+#include "delegate/image/fresnel_table.h"
+
+#include "delegate/image/specular.h"
+#include "schema/error.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>  // _mm_stream_ps, _mm_sfence: SSE2, in every x86-64
+#define OPAL_STREAMING_STORES 1
+#else
+#define OPAL_STREAMING_STORES 0
+#endif
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <string>
+#include <utility>
+#include <cstdint>
+
+namespace opal {
+
+namespace {
+
+// Shadow rays start this fraction of the scene's extent off the surface, as the
+// irradiance's shadow rays do (mesh_irradiance.cpp).
+constexpr double kShadowOffset = 1e-4;
+
+// Pixels are shaded in blocks of kBlockWidth x kBlockHeight neighbours: their primary rays
+// are one Embree packet, their shadow rays toward one light another (RayScene's coherent
+// queries, about twice as fast as one ray at a time).
+constexpr int kBlockWidth = 4, kBlockHeight = 4;
+constexpr int kBlockPixels = kBlockWidth * kBlockHeight;
+static_assert(kBlockPixels == int(RayScene::kPacketSize));
+
+const std::array<hd::Token, 8> Aovs = {hd::Aov::Color,  hd::Aov::Subsurface, hd::Aov::Specular, hd::Aov::Irradiance,
+                                       hd::Aov::Normal, hd::Aov::Depth,      hd::Aov::PrimId,   hd::Aov::Alpha};
+
+struct Pixel {
+    Imath::V3f subsurface{0.0f}, specular{0.0f}, irradiance{0.0f}, normal{0.0f}, background{0.0f};
+    float depth = std::numeric_limits<float>::infinity();
+    float primId = -1.0f;
+    float alpha = 0.0f;
+    bool hit = false;
+};
+
+// What shading reads of one mesh, looked up once per frame instead of once per pixel.
+struct MeshContext {
+    const MeshShading* shading = nullptr;
+    std::span<const std::uint32_t> triangles;  // 3 render-mesh vertices per ray-scene triangle
+    const Imath::V3f* normals = nullptr;       // per vertex, object space; null: geometric normals
+    double alpha = 0.0;                        // ggxAlpha(roughness)
+    double footprint = 0.0;                    // reflectionFootprint(alpha)
+    bool specular = false;                     // the GGX layer is on (render setting and material)
+    std::optional<FresnelTable> fresnel;       // F_t(shading->eta, .)
+};
+
+// The frame as the pixel loop reads it.
+struct FrameContext {
+    const Frame& frame;
+    const RenderOptions& options;
+    const CameraView& camera;
+    std::vector<MeshContext> meshes;  // by ray-scene prim number
+    std::vector<DomeLookup> domes;    // frame.domes, as the pixel loop looks them up
+    std::vector<int> backgroundLevels;  // per dome: its pyramid level for one pixel (-1: not visible)
+    double shadowOffset = 0.0;        // kShadowOffset * the scene's extent
+    CameraView::PixelRect scene;      // where primary rays may hit (empty: no meshes)
+};
+
+FrameContext frameContext(const Frame& frame, const CameraView& camera, const RenderOptions& options) {
+    FrameContext context{frame, options, camera, {}, {}, {}, 0.0, {}};
+    for (const DomeView& dome : frame.domes) {
+        context.domes.emplace_back(dome.map, dome.domeFromWorld, Imath::V3f(dome.scale.x, dome.scale.y, dome.scale.z));
+        context.backgroundLevels.push_back(dome.visibleToCamera ? context.domes.back().levelFor(camera.pixelAngle()) : -1);
+    }
+    if (!frame.rays) return context;
+    context.shadowOffset = kShadowOffset * frame.rays->extent();
+    context.scene = camera.pixelBounds(frame.rays->bounds());
+    for (std::size_t prim = 0; prim < frame.meshes.size(); ++prim) {
+        const MeshShading& shading = *frame.meshes[prim];
+        MeshContext mesh;
+        mesh.fresnel.emplace(shading.eta);
+        mesh.shading = &shading;
+        mesh.triangles = frame.rays->triangles(std::uint32_t(prim));
+        const RenderMesh& renderMesh = shading.asset->mesh;
+        if (renderMesh.normals.size() == renderMesh.points.size()) mesh.normals = renderMesh.normals.data();
+        mesh.alpha = ggxAlpha(shading.roughness);
+        mesh.footprint = reflectionFootprint(mesh.alpha);
+        mesh.specular = options.specular && shading.specular;
+        context.meshes.push_back(mesh);
+    }
+    return context;
+}
+
+// v / |v| with one division.
+Imath::V3d unit(const Imath::V3d& v) { return v * (1.0 / v.length()); }
+
+// sum_j b_j value[v_j] over the hit triangle's vertices, RGB.
+Imath::V3f interpolate(const std::vector<float>& values, const std::uint32_t* v, const float* b) {
+    Imath::V3f sum(0.0f);
+    for (int j = 0; j < 3; ++j) {
+        const float* p = values.data() + 3 * std::size_t(v[j]);
+        sum += Imath::V3f(p[0], p[1], p[2]) * b[j];
+    }
+    return sum;
+}
+
+// Where a primary ray hit a mesh, as the specular layer needs it (world space, unit vectors).
+struct Surface {
+    const MeshContext* mesh = nullptr;  // null: no specular layer here (a miss, or switched off)
+    Imath::V3d p, n, ng, wo;            // point, shading normal, geometric normal toward wo, toward the viewer
+    double fresnelReflectance = 0.0;    // F_r(eta, n.wo) = 1 - F_t(eta, n.wo)
+};
+
+struct Block {
+    int count = 0;
+    std::array<int, kBlockPixels> x{}, y{};
+    std::array<Ray, kBlockPixels> rays;
+    std::array<std::optional<RayHit>, kBlockPixels> hits;
+    std::array<Surface, kBlockPixels> surfaces;
+    std::array<Pixel, kBlockPixels> pixels;
+};
+
+// dome.radiance for any count, DomeLookup::kLanes at a time.
+void lookUp(const DomeLookup& dome, const Imath::V3f* directions, std::size_t count, int level, Imath::V3f* out) {
+    for (std::size_t first = 0; first < count; first += DomeLookup::kLanes)
+        dome.radiance(directions + first, std::min(DomeLookup::kLanes, count - first), level, out + first);
+}
+
+// The domes visible to the camera behind the pixels whose rays missed, one lookup call per
+// dome for the block.
+void background(const FrameContext& context, Block& block) {
+    if (context.options.transparentBackground) return;
+    std::array<Imath::V3f, kBlockPixels> directions;
+    std::array<int, kBlockPixels> pixelOf{};
+    std::size_t count = 0;
+    for (int i = 0; i < block.count; ++i)
+        if (!block.hits[i]) {
+            directions[count] = block.rays[i].direction();
+            pixelOf[count++] = i;
+        }
+    if (count == 0) return;
+    std::array<Imath::V3f, kBlockPixels> radiance;
+    for (std::size_t d = 0; d < context.domes.size(); ++d) {
+        if (context.backgroundLevels[d] < 0) continue;
+        lookUp(context.domes[d], directions.data(), count, context.backgroundLevels[d], radiance.data());
+        for (std::size_t k = 0; k < count; ++k) {
+            Pixel& pixel = block.pixels[pixelOf[k]];
+            pixel.background += radiance[k];
+            pixel.alpha = 1.0f;
+        }
+    }
+}
+
+// Everything but the specular layer: subsurface = F_t(eta, n.w_o) sum_j b_j L(v_j), E, n, depth.
+Surface shadeSurface(const FrameContext& context, const Ray& ray, const RayHit& hit, Pixel& pixel) {
+    const MeshContext& mesh = context.meshes[hit.prim];
+    const MeshShading& shading = *mesh.shading;
+    const std::uint32_t* v = mesh.triangles.data() + 3 * std::size_t(hit.triangle);
+    const float b[3] = {1.0f - hit.u - hit.v, hit.u, hit.v};
+    Surface s;
+    s.p = Imath::V3d(ray.origin()) + Imath::V3d(ray.direction()) * double(hit.t);
+    s.wo = -unit(Imath::V3d(ray.direction()));
+    s.ng = unit(Imath::V3d(hit.geometricNormal));
+    if (s.ng.dot(s.wo) < 0.0) s.ng = -s.ng;  // seen from behind: offsets go to the viewer's side
+    s.n = s.ng;
+    if (mesh.normals) {
+        const Imath::V3f object = mesh.normals[v[0]] * b[0] + mesh.normals[v[1]] * b[1] + mesh.normals[v[2]] * b[2];
+        const Imath::V3d world = Imath::V3d(object * shading.normalToWorld);
+        if (world.length() > 0.0) s.n = unit(world);
+    }
+    const double muO = std::max(0.0, s.n.dot(s.wo));
+    const double transmittance = mesh.fresnel->transmittance(muO);
+    s.fresnelReflectance = 1.0 - transmittance;  // fresnelReflectance(eta, n.wo): F_t clamps the same way
+    pixel.subsurface = interpolate(*shading.vertexRadiance, v, b) * float(transmittance);
+    pixel.irradiance = interpolate(*shading.vertexIrradiance, v, b);
+    pixel.normal = Imath::V3f(s.n);
+    pixel.depth = hit.t;
+    pixel.primId = float(shading.primId);
+    pixel.alpha = 1.0f;
+    pixel.hit = true;
+    if (mesh.specular) s.mesh = &mesh;
+    return s;
+}
+
+// sum over the analytic lights of f_s (n.l) E_perp V, V by one packet of shadow rays per light.
+void analyticSpecular(const FrameContext& context, const Block& block, std::array<Imath::V3d, kBlockPixels>& sums) {
+    std::array<Ray, kBlockPixels> shadows;
+    std::array<Imath::V3d, kBlockPixels> unshadowed;
+    std::array<int, kBlockPixels> pixelOf{};
+    std::array<std::uint8_t, kBlockPixels> blocked{};
+    for (const AnalyticLight& light : context.frame.lights) {
+        std::size_t count = 0;
+        for (int i = 0; i < block.count; ++i) {
+            const Surface& s = block.surfaces[i];
+            if (!s.mesh) continue;
+            const std::optional<Incidence> in = light.incidence(s.p);
+            if (!in || s.ng.dot(in->toLight) <= 0.0) continue;  // no light, or below the surface
+            const double f = ggxReflectance(s.n, s.wo, in->toLight, s.mesh->alpha, *s.mesh->fresnel);
+            if (f <= 0.0) continue;
+            const float far = std::isinf(in->distance) ? std::numeric_limits<float>::infinity()
+                                                       : float(in->distance * (1.0 - 1e-4));
+            shadows[count] = Ray(Imath::V3f(s.p + s.ng * context.shadowOffset), Imath::V3f(in->toLight), 0.0f, far);
+            unshadowed[count] = Imath::V3d(in->normalIrradiance.x, in->normalIrradiance.y, in->normalIrradiance.z) * f;
+            pixelOf[count++] = i;
+        }
+        if (count == 0) continue;
+        context.frame.rays->occludedCoherent(std::span(shadows).first(count), std::span(blocked).first(count));
+        for (std::size_t k = 0; k < count; ++k)
+            if (!blocked[k]) sums[pixelOf[k]] += unshadowed[k];
+    }
+}
+
+// The domes' reflection F_r(eta, n.v) L_dome(reflect(v, n), footprint) at the block's
+// specular surfaces: one lookup call per dome and run of surfaces of one mesh.
+void domeReflections(const FrameContext& context, Block& block) {
+    if (context.domes.empty()) return;
+    std::array<Imath::V3f, kBlockPixels> directions, radiance;
+    std::array<int, kBlockPixels> pixelOf{};
+    for (int first = 0; first < block.count;) {
+        const MeshContext* mesh = block.surfaces[first].mesh;
+        if (!mesh) {
+            ++first;
+            continue;
+        }
+        std::size_t count = 0;
+        int i = first;
+        for (; i < block.count && (block.surfaces[i].mesh == mesh || !block.surfaces[i].mesh); ++i) {
+            const Surface& s = block.surfaces[i];
+            if (!s.mesh) continue;
+            directions[count] = Imath::V3f(reflect(s.wo, s.n));
+            pixelOf[count++] = i;
+        }
+        first = i;
+        for (const DomeLookup& dome : context.domes) {
+            lookUp(dome, directions.data(), count, dome.levelFor(mesh->footprint), radiance.data());
+            for (std::size_t k = 0; k < count; ++k)
+                block.pixels[pixelOf[k]].specular += radiance[k] * float(block.surfaces[pixelOf[k]].fresnelReflectance);
+        }
+    }
+}
+
+// The specular layer (specular.h): the analytic lights, then the domes' reflection
+// F_r(eta, n.v) L_dome(reflect(v, n), footprint).
+void shadeSpecular(const FrameContext& context, Block& block) {
+    std::array<Imath::V3d, kBlockPixels> sums;
+    sums.fill(Imath::V3d(0.0));
+    analyticSpecular(context, block, sums);
+    for (int i = 0; i < block.count; ++i) {
+        const Surface& s = block.surfaces[i];
+        if (!s.mesh) continue;
+        block.pixels[i].specular = Imath::V3f(sums[i]);
+    }
+    domeReflections(context, block);
+}
+
+// The hit triangles' vertex data (normal, radiance, irradiance: three arrays of megabytes,
+// read at random) requested for the whole block before any pixel is shaded, so that the
+// memory latencies overlap instead of adding up (720p benchmark frame: medians 45-50 -> 44 ms).
+void prefetchVertices(const FrameContext& context, const Block& block) {
+    for (int i = 0; i < block.count; ++i) {
+        const std::optional<RayHit>& hit = block.hits[i];
+        if (!hit) continue;
+        const MeshContext& mesh = context.meshes[hit->prim];
+        const std::uint32_t* v = mesh.triangles.data() + 3 * std::size_t(hit->triangle);
+        for (int j = 0; j < 3; ++j) {
+            if (mesh.normals) __builtin_prefetch(mesh.normals + v[j]);
+            __builtin_prefetch(mesh.shading->vertexRadiance->data() + 3 * std::size_t(v[j]));
+            __builtin_prefetch(mesh.shading->vertexIrradiance->data() + 3 * std::size_t(v[j]));
+        }
+    }
+}
+
+void shadeBlock(const FrameContext& context, Block& block) {
+    for (int i = 0; i < block.count; ++i) {
+        block.rays[i] = context.camera.ray(block.x[i] + 0.5, block.y[i] + 0.5);
+        block.pixels[i] = Pixel{};
+        block.surfaces[i] = Surface{};
+    }
+    const std::span<const Ray> rays = std::span(block.rays).first(std::size_t(block.count));
+    const std::span<std::optional<RayHit>> hits = std::span(block.hits).first(std::size_t(block.count));
+    // Blocks outside the scene's projected bounds miss everything: no rays traced.
+    const int x0 = block.x[0], y0 = block.y[0], x1 = block.x[block.count - 1] + 1, y1 = block.y[block.count - 1] + 1;
+    if (context.frame.rays && context.scene.overlaps(x0, y0, x1, y1))
+        context.frame.rays->intersectCoherent(rays, hits);
+    else
+        std::fill(hits.begin(), hits.end(), std::nullopt);
+    prefetchVertices(context, block);
+    bool specular = false;
+    for (int i = 0; i < block.count; ++i) {
+        if (!hits[i]) continue;
+        block.surfaces[i] = shadeSurface(context, rays[i], *hits[i], block.pixels[i]);
+        specular = specular || block.surfaces[i].mesh;
+    }
+    background(context, block);
+    if (specular) shadeSpecular(context, block);
+}
+
+// A fixed channel count, assigned one by one: the compiler writes them in place (std::copy_n
+// of a few floats becomes a call to memmove).
+template <int Channels>
+void store(float* target, std::size_t index, const float* values) {
+    if (!target) return;
+    float* out = target + index * Channels;
+    for (int c = 0; c < Channels; ++c) out[c] = values[c];
+}
+
+void write(const AovTargets& t, std::size_t index, const Pixel& p) {
+    const Imath::V3f color = p.hit ? p.subsurface + p.specular : p.background;
+    const float rgba[4] = {color.x, color.y, color.z, p.alpha};
+    store<4>(t.color, index, rgba);
+    store<3>(t.subsurface, index, &p.subsurface.x);
+    store<3>(t.specular, index, &p.specular.x);
+    store<3>(t.irradiance, index, &p.irradiance.x);
+    store<3>(t.normal, index, &p.normal.x);
+    store<1>(t.depth, index, &p.depth);
+    store<1>(t.primId, index, &p.primId);
+    store<1>(t.alpha, index, &p.alpha);
+}
+
+}  // namespace
+
+std::span<const hd::Token> supportedAovs() { return Aovs; }
+
+int aovChannelCount(const hd::Token& aov) {
+    if (aov == hd::Aov::Color) return 4;
+    if (aov == hd::Aov::Subsurface || aov == hd::Aov::Specular || aov == hd::Aov::Irradiance || aov == hd::Aov::Normal)
+        return 3;
+    if (aov == hd::Aov::Depth || aov == hd::Aov::PrimId || aov == hd::Aov::Alpha) return 1;
+    return 0;
+}
+
+// A tile's AOVs, written in cache and then streamed to the frame's buffers row by row with
+// non-temporal stores: plain stores would first read every line of the frame's AOVs (70 MB
+// at 720p with every AOV) into the cache only to overwrite it.
+class TileAovs {
+public:
+    TileAovs(const AovTargets& frame, int tileWidth, int tileHeight) : frame_(frame), tileWidth_(tileWidth) {
+        const std::size_t pixels = std::size_t(tileWidth) * tileHeight;
+        for (std::size_t a = 0; a < kAovs; ++a)
+            if (frame_.*kMembers[a]) {
+                storage_[a].assign(pixels * kChannels[a], 0.0f);
+                local_.*kMembers[a] = storage_[a].data();
+            }
+    }
+    // Where write() puts the tile's pixels: index (y - y0) tileWidth + (x - x0).
+    const AovTargets& local() const { return local_; }
+
+    // Rows [y0, y1) x columns [x0, x1) of the tile into the frame (frameWidth pixels a row).
+    void flush(int x0, int y0, int x1, int y1, int frameWidth) const {
+        for (std::size_t a = 0; a < kAovs; ++a) {
+            float* target = frame_.*kMembers[a];
+            if (!target) continue;
+            const std::size_t c = kChannels[a], count = std::size_t(x1 - x0) * c;
+            for (int y = y0; y < y1; ++y)
+                streamCopy(storage_[a].data() + std::size_t(y - y0) * tileWidth_ * c,
+                           target + (std::size_t(y) * frameWidth + x0) * c, count);
+        }
+#if OPAL_STREAMING_STORES
+        _mm_sfence();  // the streamed rows are visible before the task ends
+#endif
+    }
+
+private:
+    static constexpr std::size_t kAovs = 8;
+    static constexpr std::array<float* AovTargets::*, kAovs> kMembers = {
+        &AovTargets::color,  &AovTargets::subsurface, &AovTargets::specular, &AovTargets::irradiance,
+        &AovTargets::normal, &AovTargets::depth,      &AovTargets::primId,   &AovTargets::alpha};
+    static constexpr std::array<std::size_t, kAovs> kChannels = {4, 3, 3, 3, 3, 1, 1, 1};
+
+    // to[0, n) = from[0, n): plain stores up to a 16-byte boundary, then 4 floats a store.
+    static void streamCopy(const float* from, float* to, std::size_t n) {
+        std::size_t i = 0;
+#if OPAL_STREAMING_STORES
+        for (; i < n && (reinterpret_cast<std::uintptr_t>(to + i) & 15u) != 0; ++i) to[i] = from[i];
+        for (; i + 4 <= n; i += 4) _mm_stream_ps(to + i, _mm_loadu_ps(from + i));
+#endif
+        for (; i < n; ++i) to[i] = from[i];
+    }
+
+    const AovTargets& frame_;
+    int tileWidth_;
+    AovTargets local_;
+    std::array<std::vector<float>, kAovs> storage_;
+};
+
+namespace {
+
+// Debug builds check what a pass wrote: every radiometric AOV finite (light_emission.h keeps
+// every sum in range; the relight engine refuses non-finite radiance). Tests check the same
+// on Release builds through the buffers.
+[[maybe_unused]] void requireFiniteRadiometric(const AovTargets& t, std::size_t pixels) {
+    const std::pair<const float*, std::size_t> radiometric[] = {
+        {t.color, 4}, {t.subsurface, 3}, {t.specular, 3}, {t.irradiance, 3}, {t.alpha, 1}};
+    for (const auto& [values, channels] : radiometric) {
+        if (!values) continue;
+        for (std::size_t i = 0; i < pixels * channels; ++i)
+            if (!std::isfinite(values[i]))
+                throw Error("renderer: pixel " + std::to_string(i / channels) + " of a radiometric AOV is not finite");
+    }
+}
+
+}  // namespace
+
+void renderFrame(const Frame& frame, const CameraView& camera, const RenderOptions& options, const AovTargets& targets) {
+    const FrameContext context = frameContext(frame, camera, options);
+    const int width = camera.width(), height = camera.height();
+    // Tiles are whole blocks, so a block never straddles two tiles.
+    const int tileWidth = std::max(kBlockWidth, options.tileSize / kBlockWidth * kBlockWidth);
+    const int tileHeight = std::max(kBlockHeight, options.tileSize / kBlockHeight * kBlockHeight);
+    const int tilesX = (width + tileWidth - 1) / tileWidth, tilesY = (height + tileHeight - 1) / tileHeight;
+    tbb::parallel_for(tbb::blocked_range<int>(0, tilesX * tilesY), [&](const tbb::blocked_range<int>& range) {
+        Block block;
+        TileAovs tile(targets, tileWidth, tileHeight);
+        for (int t = range.begin(); t != range.end(); ++t) {
+            const int x0 = (t % tilesX) * tileWidth, y0 = (t / tilesX) * tileHeight;
+            const int x1 = std::min(x0 + tileWidth, width), y1 = std::min(y0 + tileHeight, height);
+            for (int by = y0; by < y1; by += kBlockHeight)
+                for (int bx = x0; bx < x1; bx += kBlockWidth) {
+                    block.count = 0;
+                    for (int y = by; y < std::min(by + kBlockHeight, y1); ++y)
+                        for (int x = bx; x < std::min(bx + kBlockWidth, x1); ++x) {
+                            block.x[block.count] = x;
+                            block.y[block.count++] = y;
+                        }
+                    shadeBlock(context, block);
+                    for (int i = 0; i < block.count; ++i)
+                        write(tile.local(), std::size_t(block.y[i] - y0) * tileWidth + (block.x[i] - x0),
+                              block.pixels[i]);
+                }
+            tile.flush(x0, y0, x1, y1, width);
+        }
+    });
+#ifndef NDEBUG
+    requireFiniteRadiometric(targets, std::size_t(width) * std::size_t(height));
+#endif
+}
+
+}  // namespace opal

@@ -1,0 +1,109 @@
+#include "delegate/relight/mesh_irradiance.h"
+
+#include "raytrace/ray_scene.h"
+#include "schema/error.h"
+#include "schema/scatter/fresnel_moments.h"
+
+#include <string>
+
+namespace opal {
+
+namespace {
+
+// Shadow rays start this fraction of the scene's extent along the normal (as the bake's
+// environment visibility does), clear of the surface the sample lies on.
+constexpr float kShadowOffset = 1e-4f;
+constexpr std::uint32_t kTermsWithoutEnvironment = 2;
+
+std::uint32_t momentTerms(const TranslucentAsset& asset) {
+    if (asset.environment.offsets.empty()) return kTermsWithoutEnvironment;
+    const std::uint32_t terms = asset.environment.fresnelTerms;
+    if (terms < 1 || terms > std::uint32_t(kMaxFresnelTerms))
+        throw Error("irradiance: asset '" + asset.name + "' has " + std::to_string(terms) +
+                    " Fresnel terms in its environment transfer");
+    return terms;
+}
+
+const TranslucentAsset& require(const std::shared_ptr<const TranslucentAsset>& asset) {
+    if (!asset) throw Error("irradiance: no asset");
+    return *asset;
+}
+
+}  // namespace
+
+MeshIrradiance::MeshIrradiance(std::shared_ptr<const TranslucentAsset> asset, const Imath::M44d& objectToWorld)
+    : asset_(std::move(asset)),
+      objectToWorld_(objectToWorld),
+      terms_(momentTerms(require(asset_))),
+      response_(asset_->range.etaMin, asset_->range.etaMax, int(terms_)),
+      placed_(placeSamples(asset_->samples, objectToWorld)),
+      total_(std::uint32_t(asset_->samples.size()), terms_) {}
+
+void MeshIrradiance::compute(Contribution& c, const RayScene* scene) {
+    c.moments = IrradianceMoments(std::uint32_t(placed_.positions.size()), terms_);
+    if (const auto* light = std::get_if<AnalyticLight>(&c.source)) {
+        const float offset = scene ? kShadowOffset * scene->extent() : 0.0f;
+        c.arrivals = lightArrivals(*light, placed_, scene, offset);
+        addMoments(c.arrivals, response_, c.moments);
+        return;
+    }
+    const auto& dome = std::get<std::shared_ptr<const EnvironmentLight>>(c.source);
+    if (asset_->environment.offsets.empty())
+        throw Error("irradiance: asset '" + asset_->name + "' has no environment transfer for a dome light");
+    if (!environment_) environment_ = std::make_unique<const EnvironmentVectors>(asset_->environment, asset_->samples.size());
+    const CubeMapLayout cube(asset_->environment.cubeFaceSize);
+    environment_->addIrradiance(dome->haarRadiance(cube, objectToWorld_), c.moments);
+}
+
+void MeshIrradiance::resum() {
+    total_ = IrradianceMoments(std::uint32_t(placed_.positions.size()), terms_);
+    for (const auto& [id, c] : lights_) total_ += c.moments;
+}
+
+void MeshIrradiance::setTransform(const Imath::M44d& objectToWorld, const RayScene& scene) {
+    placed_ = placeSamples(asset_->samples, objectToWorld);
+    objectToWorld_ = objectToWorld;
+    for (auto& [id, c] : lights_) compute(c, &scene);
+    resum();
+}
+
+void MeshIrradiance::setLight(const hd::SdfPath& id, const AnalyticLight& light, const RayScene& scene) {
+    Contribution c{light, {}, {}};
+    compute(c, &scene);
+    lights_.insert_or_assign(id, std::move(c));
+    resum();
+}
+
+void MeshIrradiance::setLight(const hd::SdfPath& id, std::shared_ptr<const EnvironmentLight> light) {
+    if (!light) throw Error("irradiance: dome light " + id + " has no map");
+    Contribution c{std::move(light), {}, {}};
+    compute(c, nullptr);
+    lights_.insert_or_assign(id, std::move(c));
+    resum();
+}
+
+void MeshIrradiance::removeLight(const hd::SdfPath& id) {
+    if (lights_.erase(id)) resum();
+}
+
+void MeshIrradiance::updateShadows(const RayScene& scene) {
+    for (auto& [id, c] : lights_)
+        if (std::holds_alternative<AnalyticLight>(c.source)) compute(c, &scene);
+    resum();
+}
+
+std::vector<float> MeshIrradiance::exactIrradiance(double eta) const {
+    std::vector<float> rgb(placed_.positions.size() * 3, 0.0f);
+    const std::vector<double> c = fresnelMoments(eta, int(terms_));
+    for (const auto& [id, contribution] : lights_) {
+        if (std::holds_alternative<AnalyticLight>(contribution.source)) {
+            addExactIrradiance(contribution.arrivals, eta, rgb);
+        } else {
+            const std::vector<float> dome = contribution.moments.combine(c);
+            for (std::size_t j = 0; j < rgb.size(); ++j) rgb[j] += dome[j];
+        }
+    }
+    return rgb;
+}
+
+}  // namespace opal

@@ -1,0 +1,68 @@
+// The irradiance moments of one placed translucent mesh, kept per light so that an edit
+// recomputes only what changed (DESIGN.md s.6): moving or editing a light recomputes that
+// light's E_m alone and re-sums; moving the mesh recomputes every light (they all depend
+// on where the samples are); moving an occluder re-shadows the analytic lights only.
+//
+// The moment count is the asset's environment transfer's fresnelTerms (the baked dome
+// vectors fix it), or 2 when the asset has no environment transfer.
+#pragma once
+
+#include "delegate/relight/analytic_light.h"
+#include "delegate/relight/environment_light.h"
+#include "delegate/relight/environment_vectors.h"
+#include "delegate/relight/fresnel_response.h"
+#include "delegate/hd/types.h"
+#include "delegate/relight/irradiance.h"
+
+#include <map>
+#include <memory>
+#include <variant>
+
+namespace opal {
+
+class RayScene;
+
+class MeshIrradiance {
+public:
+    MeshIrradiance(std::shared_ptr<const TranslucentAsset> asset, const Imath::M44d& objectToWorld);
+
+    std::uint32_t terms() const { return terms_; }
+    const PlacedSamples& samples() const { return placed_; }
+
+    // Re-places the samples and recomputes every light (shadows from `scene`).
+    void setTransform(const Imath::M44d& objectToWorld, const RayScene& scene);
+    // Adds or replaces one light and recomputes only its contribution.
+    void setLight(const hd::SdfPath& id, const AnalyticLight& light, const RayScene& scene);
+    void setLight(const hd::SdfPath& id, std::shared_ptr<const EnvironmentLight> light);
+    void removeLight(const hd::SdfPath& id);
+    // Occluders changed: recompute the analytic lights' shadows.
+    void updateShadows(const RayScene& scene);
+
+    // sum over lights of E_m(x_i): what RelightEngine::setIrradiance takes.
+    const IrradianceMoments& moments() const { return total_; }
+    // E(x_i; eta) with the exact F_t(eta, .) for analytic lights and sum_m c_m(eta) E_m for
+    // domes (their Fresnel factor is only known in moment form): samples x 3, the input of
+    // the reference gather.
+    std::vector<float> exactIrradiance(double eta) const;
+
+private:
+    using Source = std::variant<AnalyticLight, std::shared_ptr<const EnvironmentLight>>;
+    struct Contribution {
+        Source source;
+        IrradianceMoments moments;
+        std::vector<LightArrival> arrivals;  // analytic lights: for exactIrradiance
+    };
+    void compute(Contribution& contribution, const RayScene* scene);
+    void resum();
+
+    std::shared_ptr<const TranslucentAsset> asset_;
+    Imath::M44d objectToWorld_;
+    std::uint32_t terms_ = 0;
+    FresnelResponse response_;
+    PlacedSamples placed_;
+    std::unique_ptr<const EnvironmentVectors> environment_;  // built with the first dome
+    std::map<hd::SdfPath, Contribution> lights_;
+    IrradianceMoments total_;
+};
+
+}  // namespace opal

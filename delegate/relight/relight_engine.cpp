@@ -1,0 +1,198 @@
+#include "delegate/relight/relight_engine.h"
+
+#include "delegate/relight/float4.h"
+#include "schema/error.h"
+#include "schema/scatter/fresnel_moments.h"
+#include "schema/wavelet/cdf97.h"
+#include "schema/wavelet/haar.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <atomic>
+#include <array>
+#include <cstring>
+#include <numbers>
+#include <string>
+#include <utility>
+
+namespace opal {
+
+namespace {
+
+constexpr std::uint32_t kRowsPerTask = 256;
+
+
+void checkAsset(const TranslucentAsset& asset) {
+    const std::size_t n = asset.layout.cells();
+    const auto fail = [&](const std::string& what) {
+        throw Error("relight engine: asset '" + asset.name + "': " + what);
+    };
+    if (n == 0 || asset.samples.size() != n)
+        fail(std::to_string(asset.samples.size()) + " samples for a layout of " + std::to_string(n) + " cells");
+    if (asset.transfer.perBasis.size() != std::size_t(asset.basis.K()))
+        fail(std::to_string(asset.transfer.perBasis.size()) + " transfer matrices for K = " +
+             std::to_string(asset.basis.K()) + " basis functions");
+    for (const SparseMatrix& m : asset.transfer.perBasis)
+        if (m.rows != n || m.cols != n || m.rowOffsets.size() != n + 1)
+            fail("a transfer matrix is " + std::to_string(m.rows) + " x " + std::to_string(m.cols) + ", expected " +
+                 std::to_string(n) + " x " + std::to_string(n));
+}
+
+// The asset's transfer, after checkAsset: what the product copy is built from.
+TransferProduct checkedTransfer(const std::shared_ptr<const TranslucentAsset>& asset) {
+    if (!asset) throw Error("relight engine: no asset");
+    checkAsset(*asset);
+    return TransferProduct(asset->transfer, asset->samples.size());
+}
+
+}  // namespace
+
+RelightEngine::RelightEngine(std::shared_ptr<const TranslucentAsset> asset)
+    : asset_(std::move(asset)), product_(checkedTransfer(asset_)) {
+    samples_ = asset_->samples.size();
+    K_ = asset_->transfer.perBasis.size();
+    paddedK_ = (K_ + 3) / 4 * 4;
+    moments_ = IrradianceMoments(std::uint32_t(samples_), 1);
+    products_.assign(K_ * samples_ * 3, 0.0f);
+    material_.eta = 0.0;  // forces the first setMaterial to weigh the products
+    setMaterial(asset_->defaultMaterial);
+}
+
+void RelightEngine::setIrradiance(const IrradianceMoments& irradiance) {
+    if (irradiance.samples != samples_ || irradiance.terms < 1 || irradiance.terms > std::uint32_t(kMaxFresnelTerms) ||
+        irradiance.values.size() != samples_ * irradiance.channels())
+        throw Error("relight engine: irradiance of " + std::to_string(irradiance.samples) + " samples x " +
+                    std::to_string(irradiance.terms) + " moments for an asset of " + std::to_string(samples_) +
+                    " samples (1 to 3 moments)");
+    const std::size_t C = irradiance.channels(), W = (C + 3) / 4 * 4;
+    // wE = w0 E: every moment and channel at once, padded to W lanes.
+    haar_.assign(samples_ * W, 0.0f);
+    for (std::size_t i = 0; i < samples_; ++i) std::copy_n(irradiance.sample(i), C, haar_.data() + i * W);
+    haarForwardCharts(std::span<float>(haar_), asset_->layout, std::uint32_t(W));
+
+    // y_{k,m} = (w1 T_k w0^-1) wE_m, one task per block of rows of every matrix.
+    products_.resize(samples_ * K_ * C);
+    tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, std::uint32_t(samples_), kRowsPerTask),
+                      [&](const tbb::blocked_range<std::uint32_t>& rows) {
+                          product_.multiplyRows(haar_.data(), W, products_.data(), C, rows.begin(), rows.end());
+                      });
+    moments_ = irradiance;
+    fresnel_ = fresnelMoments(material_.eta, int(moments_.terms));
+    formRadiance(true);
+}
+
+std::vector<std::string> RelightEngine::setMaterial(const Material& material) {
+    std::vector<std::string> warnings;
+    const Material clamped = asset_->range.clamp(material, &warnings);
+    const std::array<std::vector<double>, 3> s = asset_->basis.project(clamped);  // s_k(sigma, eta)
+    profile_.assign(3 * paddedK_, 0.0f);
+    for (int c = 0; c < 3; ++c)
+        for (std::size_t k = 0; k < K_; ++k) profile_[c * paddedK_ + k] = float(s[c][k] / std::numbers::pi);
+    const bool etaChanged = clamped.eta != material_.eta;
+    material_ = clamped;
+    if (etaChanged) fresnel_ = fresnelMoments(material_.eta, int(moments_.terms));
+    formRadiance(etaChanged);
+    return warnings;
+}
+
+// sum_k (s_k / pi) z_k(p) per channel, where z_k = sum_m c_m y_{k,m} is the eta-dependent
+// part: re-weighed from the products (and kept) when eta changed, else read back, so that
+// a sigma edit only weighs K values per channel. z and s/pi are stored channel by channel
+// with K padded to whole registers (the padding stays zero).
+void RelightEngine::weighProducts(bool reweigh, std::size_t begin, std::size_t end) {
+    const std::size_t terms = moments_.terms, C = 3 * terms;
+    float c[kMaxFresnelTerms];
+    for (std::size_t m = 0; m < terms; ++m) c[m] = float(fresnel_[m]);
+    for (std::size_t p = begin; p != end; ++p) {
+        float* z = weighted_.data() + p * 3 * paddedK_;
+        if (reweigh) {
+            const float* y = products_.data() + p * K_ * C;
+            for (std::size_t ch = 0; ch < 3; ++ch)
+                for (std::size_t k = 0; k < K_; ++k) {
+                    float sum = 0.0f;
+                    for (std::size_t m = 0; m < terms; ++m) sum += c[m] * y[k * C + 3 * m + ch];
+                    z[ch * paddedK_ + k] = sum;
+                }
+        }
+        for (std::size_t ch = 0; ch < 3; ++ch) {
+            Float4 sum = {};
+            for (std::size_t k = 0; k < paddedK_; k += 4)
+                sum += load4(profile_.data() + ch * paddedK_ + k) * load4(z + ch * paddedK_ + k);
+            radiance_[p * 3 + ch] = (sum[0] + sum[1]) + (sum[2] + sum[3]);
+        }
+    }
+}
+
+// Lights are bounded (light_emission.h) so that every sum stays finite for transfer values
+// a bake can produce; a sidecar whose values are finite but absurd (damaged, or written by
+// something else) could still overflow, and must not reach an image as NaN or infinity.
+// sum v * 0 is 0 exactly when every v is finite, and vectorizes (a few microseconds).
+void RelightEngine::requireFinite(std::span<const float> radiance) const {
+    float zero = 0.0f;
+    for (float v : radiance) zero += v * 0.0f;
+    if (zero != 0.0f)
+        throw Error("asset '" + asset_->name +
+                    "': the relit radiance is not finite: the sidecar's transfer values are out of range (re-bake it)");
+}
+
+// L = w1^-1 ((1/pi) sum_k s_k z_k), per channel; then the render-mesh vertices, and E(eta).
+void RelightEngine::formRadiance(bool reweigh) {
+    radiance_.resize(samples_ * 3);
+    weighted_.resize(samples_ * 3 * paddedK_);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, samples_, 2048), [&](const tbb::blocked_range<std::size_t>& r) {
+        weighProducts(reweigh, r.begin(), r.end());
+    });
+    cdf97InverseCharts(std::span<float>(radiance_), asset_->layout, 3);
+    requireFinite(radiance_);
+    const VertexWeights& weights = asset_->vertexWeights;
+    if (vertexRadiance_.use_count() > 1) {
+        std::shared_ptr<std::vector<float>> next = spareVertexRadiance_ && spareVertexRadiance_.use_count() == 1
+                                                       ? std::move(spareVertexRadiance_)
+                                                       : std::make_shared<std::vector<float>>();
+        spareVertexRadiance_ = std::exchange(vertexRadiance_, std::move(next));
+    }
+    vertexRadiance_->resize(weights.offsets.empty() ? 0 : (weights.offsets.size() - 1) * 3);
+    if (!vertexRadiance_->empty()) interpolateToVertices(weights, radiance_, *vertexRadiance_, &padded_);
+    if (reweigh) irradiance_ = moments_.combine(fresnel_);
+}
+
+void interpolateToVertices(const VertexWeights& weights, std::span<const float> perSample, std::span<float> out,
+                           std::vector<Float4>* scratch) {
+    const std::size_t vertices = weights.offsets.empty() ? 0 : weights.offsets.size() - 1;
+    if (out.size() != vertices * 3 || weights.samples.size() != weights.weights.size() ||
+        (vertices > 0 && weights.offsets.back() != weights.samples.size()))
+        throw Error("vertex weights: inconsistent sizes (" + std::to_string(vertices) + " vertices, " +
+                    std::to_string(weights.samples.size()) + " entries, " + std::to_string(out.size()) +
+                    " output values)");
+    // The samples' RGB padded to four lanes: one aligned load per weight. The gathers are
+    // what this costs (1.1 million at 65,536 samples and 139,330 vertices), not the sums.
+    const std::size_t samples = perSample.size() / 3;
+    std::vector<Float4> local;
+    std::vector<Float4>& padded = scratch ? *scratch : local;
+    padded.resize(samples);
+    for (std::size_t i = 0; i < samples; ++i)
+        padded[i] = Float4{perSample[3 * i], perSample[3 * i + 1], perSample[3 * i + 2], 0.0f};
+    std::atomic<bool> outOfRange = false;
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, vertices, 4096), [&](const tbb::blocked_range<std::size_t>& r) {
+        const std::uint32_t* sample = weights.samples.data();
+        const float* weight = weights.weights.data();
+        bool bad = false;
+        for (std::size_t v = r.begin(); v != r.end(); ++v) {
+            Float4 sum = {};
+            for (std::uint32_t e = weights.offsets[v]; e < weights.offsets[v + 1]; ++e) {
+                const std::uint32_t s = sample[e];
+                bad |= s >= samples;
+                sum += weight[e] * padded[s < samples ? s : 0];
+            }
+            out[3 * v] = sum[0];
+            out[3 * v + 1] = sum[1];
+            out[3 * v + 2] = sum[2];
+        }
+        if (bad) outOfRange = true;
+    });
+    if (outOfRange) throw Error("vertex weights: a sample index is not below the " + std::to_string(samples) + " samples");
+}
+
+}  // namespace opal

@@ -1,0 +1,85 @@
+// Relighting one translucent asset: the paper's rendering algorithm, steps 1-5 (DESIGN.md
+// s.5), with the Fresnel moments of s.6.
+//
+//   setIrradiance:  wE_m = w0 E_m                     Haar per chart, every m and RGB
+//                   y_{k,m} = (w1 T_k w0^-1) wE_m      one pass over each sparse matrix
+//                                                      (TransferProduct), all m x RGB at once
+//   setMaterial:    s_k(sigma, eta) per channel (ProfileBasis::project), c_m(eta)
+//                   z_k = sum_m c_m y_{k,m}            only when eta changes
+//                   L = w1^-1 ((1/pi) sum_k s_k z_k)   CDF 9/7 inverse per chart
+//
+// L is the subsurface radiance leaving each sample before the outgoing Fresnel factor
+// F_t(eta, w_o), which the render pass applies per pixel:
+//   L_o(x_o, w_o) = F_t(eta, w_o) L(x_o),  L(x_o) = (1/pi) sum_k s_k (T_k E)(x_o).
+// A material edit never touches the sparse matrices: O(K N) (plus O(K M N) when eta
+// changes), parallel with TBB.
+#pragma once
+
+#include "delegate/relight/float4.h"
+#include "delegate/relight/irradiance.h"
+#include "delegate/relight/transfer_product.h"
+#include "schema/asset/translucent_asset.h"
+
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace opal {
+
+class RelightEngine {
+public:
+    // Starts with the asset's default material and zero irradiance. Throws opal::Error when
+    // the asset's layout, samples, basis and transfer disagree in size.
+    explicit RelightEngine(std::shared_ptr<const TranslucentAsset> asset);
+
+    const TranslucentAsset& asset() const { return *asset_; }
+
+    // E_m(x_i) for every sample (1 to 3 moments): the expensive step, then the current
+    // material is applied.
+    void setIrradiance(const IrradianceMoments& irradiance);
+    // Clamps into the asset's editable range (one warning per clamped value, returned),
+    // then re-forms the radiance from the cached products.
+    std::vector<std::string> setMaterial(const Material& material);
+    const Material& material() const { return material_; }  // as clamped
+
+    std::span<const float> sampleRadiance() const { return radiance_; }       // samples x 3
+    std::span<const float> vertexRadiance() const { return *vertexRadiance_; } // render-mesh vertices x 3
+    // The same buffer, for frames to hold. Held buffers never change: the next edit writes
+    // into whichever of two buffers no one else holds (a host that keeps the last frame
+    // costs no allocation), else into a new one.
+    std::shared_ptr<const std::vector<float>> sharedVertexRadiance() const { return vertexRadiance_; }
+    // E(x_i; eta) = sum_m c_m(eta) E_m(x_i): samples x 3.
+    std::span<const float> sampleIrradiance() const { return irradiance_; }
+
+private:
+    void formRadiance(bool reweigh);  // L = w1^-1 ((1/pi) sum_k s_k z_k), then the vertices
+    void requireFinite(std::span<const float> radiance) const;
+    void weighProducts(bool reweigh, std::size_t begin, std::size_t end);
+
+    std::shared_ptr<const TranslucentAsset> asset_;
+    TransferProduct product_;        // the transfer, compact for y_k (transfer_product.h)
+    std::size_t samples_ = 0;
+    std::size_t K_ = 0;
+    std::size_t paddedK_ = 0;        // K rounded up to a multiple of 4
+    IrradianceMoments moments_;      // E_m as given
+    std::vector<float> haar_;        // wE_m = w0 E_m: samples x (3 terms, padded to 4 lanes)
+    std::vector<float> products_;    // y: samples x K x (3 terms)
+    std::vector<float> weighted_;    // z_k = sum_m c_m y_{k,m}: samples x 3 x paddedK
+    Material material_;
+    std::vector<double> fresnel_;    // c_m(material_.eta)
+    std::vector<float> profile_;     // s_k / pi: 3 x paddedK
+    std::vector<float> radiance_, irradiance_;
+    std::shared_ptr<std::vector<float>> vertexRadiance_ = std::make_shared<std::vector<float>>();
+    std::shared_ptr<std::vector<float>> spareVertexRadiance_;
+    std::vector<Float4> padded_;     // interpolateToVertices' scratch
+};
+
+// Per render-mesh vertex, sum_j w_j value[sample_j] (RGB): the asset's VertexWeights.
+// out: vertices x 3. Throws opal::Error on inconsistent sizes.
+// scratch (optional) holds the samples padded to four lanes between calls, so that a caller
+// interpolating on every edit allocates nothing (fresh megabytes cost page faults).
+void interpolateToVertices(const VertexWeights& weights, std::span<const float> perSample, std::span<float> out,
+                           std::vector<Float4>* scratch = nullptr);
+
+}  // namespace opal
