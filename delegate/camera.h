@@ -14,6 +14,7 @@ public:
     // non-positive focal length or aperture, a clip range that is not 0 < near < far, or a
     // transform that is not a rotation, uniform scale and translation.
     void sync(const hd::SceneDelegate& scene, hd::DirtyBits* dirtyBits) override;
+    hd::DirtyBits initialDirtyBits() const override { return hd::Dirty::Transform | hd::Dirty::Params; }
 
     const hd::CameraDesc& desc() const { return desc_; }
 

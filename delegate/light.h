@@ -26,6 +26,9 @@ public:
     // description's kind is not the prim's type, its parameters are invalid or a dome's
     // texture does not load; the light keeps its previous state then.
     void sync(const hd::SceneDelegate& scene, hd::DirtyBits* dirtyBits) override;
+    hd::DirtyBits initialDirtyBits() const override {
+        return hd::Dirty::Transform | hd::Dirty::Params | hd::Dirty::Visibility;
+    }
     // Re-reads a dome's texture through `textures` (after the OCIO config changed).
     void reloadTexture();
 

@@ -16,6 +16,7 @@ public:
     // Pulls the description on any dirty bit. Throws opal::Error naming the prim for a
     // non-positive or non-finite coefficient, eta < 1, or a roughness outside [0, 1].
     void sync(const hd::SceneDelegate& scene, hd::DirtyBits* dirtyBits) override;
+    hd::DirtyBits initialDirtyBits() const override { return hd::Dirty::Material | hd::Dirty::Params; }
 
     std::uint64_t version() const { return version_; }
     const hd::MaterialDesc& desc() const { return desc_; }

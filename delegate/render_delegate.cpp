@@ -1,6 +1,7 @@
 #include "delegate/render_delegate.h"
 
 #include "delegate/camera.h"
+#include "delegate/image/camera_view.h"
 #include "delegate/hd/render_index.h"
 #include "delegate/light.h"
 #include "delegate/material_prim.h"
@@ -8,14 +9,13 @@
 #include "delegate/translucent_mesh.h"
 #include "schema/error.h"
 
+#include <algorithm>
 #include <chrono>
 #include <climits>
 
 namespace opal {
 
 namespace {
-
-const std::string StatsPrefix = "opal:stats:";
 
 double millisecondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -89,44 +89,55 @@ std::unique_ptr<hd::Bprim> OpalRenderDelegate::createBprim(const hd::Token& type
     return nullptr;
 }
 
-std::vector<hd::Token> OpalRenderDelegate::statisticNames() {
-    std::vector<hd::Token> names;
-    for (const char* name : {"commitMs", "rayScenesMs", "irradianceMs", "productsMs", "materialMs", "referenceMs",
-                             "renderMs", "commits", "rayScenes", "lightEvaluations", "irradianceProducts",
-                             "materialUpdates", "referenceGathers"})
-        names.push_back(StatsPrefix + name);
-    return names;
-}
-
 void OpalRenderDelegate::setRenderSetting(const hd::Token& key, const hd::Value& value) {
-    if (key.rfind(StatsPrefix, 0) == 0)
-        throw Error("Opal render delegate: render setting '" + key + "' is a read-only statistic");
     const bool commitAffecting = key == "opal:reference" || key == "opal:ocioConfig";
     if (settings_.set(key, value) && commitAffecting) ++settingsVersion_;
 }
 
-hd::Value OpalRenderDelegate::renderSetting(const hd::Token& key) const {
-    if (key.rfind(StatsPrefix, 0) != 0) return settings_.get(key);
-    const std::string name = key.substr(StatsPrefix.size());
-    if (name == "commitMs") return lastCommit_.totalMs;
-    if (name == "rayScenesMs") return lastCommit_.rayScenesMs;
-    if (name == "irradianceMs") return lastCommit_.irradianceMs;
-    if (name == "productsMs") return lastCommit_.productsMs;
-    if (name == "materialMs") return lastCommit_.materialMs;
-    if (name == "referenceMs") return lastCommit_.referenceMs;
-    if (name == "renderMs") return lastRenderMs_;
-    if (name == "commits") return saturated(commits_);
-    if (name == "rayScenes") return saturated(totals_.rayScenes);
-    if (name == "lightEvaluations") return saturated(totals_.lightEvaluations);
-    if (name == "irradianceProducts") return saturated(totals_.irradianceProducts);
-    if (name == "materialUpdates") return saturated(totals_.materialUpdates);
-    if (name == "referenceGathers") return saturated(totals_.referenceGathers);
-    std::string known;
-    for (const hd::Token& n : statisticNames()) known += (known.empty() ? "" : ", ") + n;
-    throw Error("Opal render delegate: unknown statistic '" + key + "' (known: " + known + ")");
-}
+hd::Value OpalRenderDelegate::renderSetting(const hd::Token& key) const { return settings_.get(key); }
 
 std::map<hd::Token, hd::Value> OpalRenderDelegate::renderSettings() const { return settings_.all(); }
+
+std::vector<hd::RenderSettingDescriptor> OpalRenderDelegate::renderSettingDescriptors() const {
+    const auto rows = RenderSettings::descriptors();
+    return {rows.begin(), rows.end()};
+}
+
+std::vector<hd::AovDescriptor> OpalRenderDelegate::aovDescriptors() const {
+    const auto rows = hd::aovTable();
+    return {rows.begin(), rows.end()};
+}
+
+std::map<hd::Token, hd::Value> OpalRenderDelegate::renderStats() const {
+    std::map<hd::Token, hd::Value> stats;
+    const int done = passesDone_.load(), passes = passCount_.load();
+    stats["percentDone"] = passes == 0 ? 0.0 : 100.0 * done / passes;
+    // Pass 0 is the centre sample; pass p >= 1 brings the estimate to p pattern samples.
+    stats["samplesPerPixel"] = done <= 1 ? done : done - 1;
+    stats["passes"] = done;
+    stats["passMs"] = lastPassMs_.load();
+    stats["convergedMs"] = convergedMs_.load();
+    stats["converged"] = converged_.load();
+    stats["commits"] = saturated(commits_);
+    stats["commitMs"] = lastCommit_.totalMs;
+    stats["rayScenesMs"] = lastCommit_.rayScenesMs;
+    stats["irradianceMs"] = lastCommit_.irradianceMs;
+    stats["productsMs"] = lastCommit_.productsMs;
+    stats["materialMs"] = lastCommit_.materialMs;
+    stats["referenceMs"] = lastCommit_.referenceMs;
+    stats["rayScenes"] = saturated(totals_.rayScenes);
+    stats["lightEvaluations"] = saturated(totals_.lightEvaluations);
+    stats["irradianceProducts"] = saturated(totals_.irradianceProducts);
+    stats["materialUpdates"] = saturated(totals_.materialUpdates);
+    stats["referenceGathers"] = saturated(totals_.referenceGathers);
+    double total = 0.0;
+    for (const auto& [path, bytes] : meshMemory_) {
+        stats["memoryBytes:" + path] = double(bytes);
+        total += double(bytes);
+    }
+    stats["memoryBytes"] = total;
+    return stats;
+}
 
 std::unique_ptr<hd::RenderPass> OpalRenderDelegate::createRenderPass(hd::RenderIndex& index) {
     return std::make_unique<OpalRenderPass>(*this, index);
@@ -138,9 +149,135 @@ std::vector<std::string> OpalRenderDelegate::takeWarnings() {
     return warnings;
 }
 
+std::vector<std::string> OpalRenderDelegate::takeErrors() {
+    std::lock_guard lock(jobMutex_);
+    std::vector<std::string> errors;
+    errors.swap(renderErrors_);
+    return errors;
+}
+
 std::shared_ptr<const Frame> OpalRenderDelegate::frame(hd::RenderIndex& index) {
     if (!frame_ || &index != index_ || settingsVersion_ != committedSettingsVersion_) commitResources(index);
     return frame_;
+}
+
+void OpalRenderDelegate::destroyPrim(std::unique_ptr<hd::Prim> prim) {
+    if (const auto* buffer = dynamic_cast<const hd::RenderBuffer*>(prim.get())) {
+        std::unique_lock lock(jobMutex_);
+        if (job_ && std::find(job_->targets.begin(), job_->targets.end(), buffer) != job_->targets.end()) {
+            lock.unlock();
+            thread_.stopRender();
+            lock.lock();
+            job_.reset();
+        }
+    }
+    prim.reset();
+}
+
+void OpalRenderDelegate::finalizeRenderIndex(hd::RenderIndex& index) {
+    if (&index != index_) return;
+    thread_.stopRender();
+    {
+        std::lock_guard lock(jobMutex_);
+        job_.reset();
+    }
+    frame_.reset();
+    committedMeshes_.clear();
+    meshPaths_.clear();
+    meshMemory_.clear();
+    index_ = nullptr;
+}
+
+bool OpalRenderDelegate::pause() {
+    thread_.pauseRender();
+    return true;
+}
+
+bool OpalRenderDelegate::resume() {
+    thread_.resumeRender();
+    return true;
+}
+
+bool OpalRenderDelegate::stop() {
+    thread_.stopRender();
+    std::lock_guard lock(jobMutex_);
+    job_.reset();  // the next execute starts the frame again
+    return true;
+}
+
+void OpalRenderDelegate::render(hd::RenderIndex& index, RenderJob job) {
+    CameraView(job.camera, job.width, job.height, job.cameraPath);  // throws for a bad camera or size
+    job.frame = frame(index);
+    job.options = RenderOptions{settings_.specular, settings_.transparentBackground, settings_.tileSize,
+                                settings_.samplesPerPixel, settings_.pixelFilter};
+    {
+        std::lock_guard lock(jobMutex_);
+        if (job_ && job_->sameAs(job)) return;
+    }
+    restart(std::move(job));
+}
+
+void OpalRenderDelegate::restart(RenderJob job) {
+    thread_.stopRender();  // waits for the running tile at most
+    for (std::size_t a = 0; a < hd::kAovCount; ++a) {
+        hd::RenderBuffer* buffer = job.targets[a];
+        if (!buffer) continue;
+        const hd::AovDescriptor& aov = hd::aovDescriptor(hd::AovId(a));
+        if (buffer->width() != job.width || buffer->height() != job.height || buffer->channels() != aov.channelCount())
+            buffer->allocate(job.width, job.height, aov.channelCount(), aov.clearValue);
+        buffer->setConverged(false);
+    }
+    {
+        std::lock_guard lock(jobMutex_);
+        job_ = std::move(job);
+        converged_ = false;
+    }
+    thread_.startRender();
+}
+
+// A new commit while a job renders: it restarts with the new frame at its next tile.
+void OpalRenderDelegate::publish(std::shared_ptr<const Frame> frame) {
+    frame_ = std::move(frame);
+    std::lock_guard lock(jobMutex_);
+    if (!job_) return;
+    job_->frame = frame_;
+    converged_ = false;
+    for (hd::RenderBuffer* buffer : job_->targets)
+        if (buffer) buffer->setConverged(false);
+    thread_.startRender();
+}
+
+void OpalRenderDelegate::renderJob() {
+    RenderJob job;
+    {
+        std::lock_guard lock(jobMutex_);
+        if (!job_ || !job_->frame) return;
+        job = *job_;
+        jobStart_ = std::chrono::steady_clock::now();
+    }
+    const int passes = passCount(job.options);
+    passCount_ = passes;
+    passesDone_ = 0;
+    try {
+        const CameraView camera(job.camera, job.width, job.height, job.cameraPath);
+        for (int pass = 0; pass < passes; ++pass) {
+            if (thread_.checkpoint()) return;
+            const auto start = std::chrono::steady_clock::now();
+            if (!renderPass(*job.frame, camera, job.options, job.targets, pass, [this] { return thread_.checkpoint(); }))
+                return;
+            lastPassMs_ = millisecondsSince(start);
+            ++passesDone_;
+        }
+    } catch (const std::exception& e) {
+        std::lock_guard lock(jobMutex_);
+        renderErrors_.push_back(std::string("Opal render thread: ") + e.what());
+    }
+    std::lock_guard lock(jobMutex_);
+    if (thread_.stopRequested()) return;  // restarted meanwhile: the new job is not converged
+    for (hd::RenderBuffer* buffer : job.targets)
+        if (buffer) buffer->setConverged(true);
+    convergedMs_ = millisecondsSince(jobStart_);
+    converged_ = true;
 }
 
 void OpalRenderDelegate::commitResources(hd::RenderIndex& index) {
@@ -229,8 +366,10 @@ void OpalRenderDelegate::commitResources(hd::RenderIndex& index) {
     for (TranslucentMesh* mesh : meshes) mesh->markCommitted();
     committedMeshes_.assign(meshes.begin(), meshes.end());
     meshPaths_ = std::move(paths);
-    frame_ = std::move(frame);
+    meshMemory_.clear();
+    for (const TranslucentMesh* mesh : meshes) meshMemory_.emplace_back(mesh->id(), mesh->memoryBytes());
     committedSettingsVersion_ = settingsVersion_;
+    publish(std::move(frame));
     stats.totalMs = millisecondsSince(start);
     lastCommit_ = stats;
     totals_ += stats;

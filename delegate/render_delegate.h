@@ -1,20 +1,31 @@
 // Opal's render delegate (Hydra's HdRenderDelegate; hdEmbree's renderDelegate): creates
 // Opal's prims by type, holds the render settings, and in commitResources brings the
 // relighting state up to date after each sync, recomputing only what the dirty prims
-// changed (translucent_mesh.h lists what each change costs). Render passes draw the Frame
-// of the last commit. Settings, AOVs and conventions: delegate/DELEGATE.md.
+// changed (translucent_mesh.h lists what each change costs). Its render thread draws the
+// Frame of the last commit progressively into the bound buffers. Settings, AOVs, stats and
+// conventions: delegate/DELEGATE.md.
 //
-// One delegate serves one render index at a time (as in Hydra); the index and its render
-// passes must be destroyed before the delegate. Not thread-safe: sync, commit and execute
-// from one thread (each is parallel inside).
+// Threads: sync (and so commitResources), execute and destroying prims happen on one host
+// thread; relighting runs there, inside commitResources, so a host whose interface must not
+// wait for it calls sync from a worker thread (the render thread keeps drawing the previous
+// frame meanwhile). The render thread only reads immutable Frames. Buffers may be mapped,
+// renderStats() read and pause/resume/stop called from any thread. One delegate serves one
+// render index at a time (as in Hydra); the index and its render passes go before the
+// delegate.
 #pragma once
 
 #include "delegate/relight/commit_stats.h"
 #include "delegate/dome_texture.h"
 #include "delegate/hd/render_delegate.h"
 #include "delegate/prim_version.h"
+#include "delegate/render_job.h"
 #include "delegate/render_settings.h"
-#include "delegate/image/renderer.h"
+#include "delegate/render_thread.h"
+
+#include <atomic>
+#include <chrono>
+#include <mutex>
+#include <optional>
 
 #include <map>
 #include <memory>
@@ -36,13 +47,25 @@ public:
     std::unique_ptr<hd::Rprim> createRprim(const hd::Token& type, const hd::SdfPath& id) override;
     std::unique_ptr<hd::Sprim> createSprim(const hd::Token& type, const hd::SdfPath& id) override;
     std::unique_ptr<hd::Bprim> createBprim(const hd::Token& type, const hd::SdfPath& id) override;
+    // A buffer the render thread fills is released by it first.
+    void destroyPrim(std::unique_ptr<hd::Prim> prim) override;
+    // Stops rendering and lets go of the index's frame and meshes.
+    void finalizeRenderIndex(hd::RenderIndex& index) override;
 
-    // The writable settings (RenderSettings); "opal:stats:..." names are read-only: reading
-    // them gives statisticNames()' values, writing them throws.
+    // hd/aov.h's table.
+    std::vector<hd::AovDescriptor> aovDescriptors() const override;
+
+    // RenderSettings (render_settings.h).
     void setRenderSetting(const hd::Token& key, const hd::Value& value) override;
     hd::Value renderSetting(const hd::Token& key) const override;
-    // The writable settings only (what a host may pass back to createRenderDelegate).
     std::map<hd::Token, hd::Value> renderSettings() const override;
+    std::vector<hd::RenderSettingDescriptor> renderSettingDescriptors() const override;
+    // delegate/DELEGATE.md lists them: progress, the last commit's split, memory per mesh.
+    std::map<hd::Token, hd::Value> renderStats() const override;
+
+    bool pause() override;
+    bool resume() override;
+    bool stop() override;
 
     std::unique_ptr<hd::RenderPass> createRenderPass(hd::RenderIndex& index) override;
     // Throws opal::Error naming the prim (and light or material) that failed; what failed
@@ -55,20 +78,28 @@ public:
     const CommitStats& lastCommit() const { return lastCommit_; }
     const CommitStats& totals() const { return totals_; }
     std::uint64_t commits() const { return commits_; }
-    double lastRenderMs() const { return lastRenderMs_; }
-    static std::vector<hd::Token> statisticNames();
     // Warnings since the last call (materials clamped into an asset's editable range).
     std::vector<std::string> takeWarnings() override;
+    std::vector<std::string> takeErrors() override;
     // Every translucent mesh of the last commit in primId order (by path; invisible ones
     // keep their number).
     const std::vector<hd::SdfPath>& meshPaths() const { return meshPaths_; }
 
-    // For OpalRenderPass: the committed frame (null before the first commit); commits
-    // first if a setting that changes it (opal:reference, opal:ocioConfig) changed.
-    std::shared_ptr<const Frame> frame(hd::RenderIndex& index);
-    void recordRender(double ms) { lastRenderMs_ = ms; }
+    // For OpalRenderPass: renders the job (its frame and options filled in here from the
+    // last commit and the settings), restarting the render thread unless it renders the same
+    // picture already. Commits first if a setting that changes the frame (opal:reference,
+    // opal:ocioConfig) changed. Throws opal::Error for an invalid camera or size.
+    void render(hd::RenderIndex& index, RenderJob job);
+    bool isConverged() const { return converged_.load(); }
+    // Passes completed of the current job (0 .. passCount), and their count.
+    int passesDone() const { return passesDone_.load(); }
 
 private:
+    void renderJob();  // the render thread's callback
+    void restart(RenderJob job);
+    void publish(std::shared_ptr<const Frame> frame);
+    std::shared_ptr<const Frame> frame(hd::RenderIndex& index);
+
     RenderSettings settings_;
     std::uint64_t settingsVersion_ = 0, committedSettingsVersion_ = 0;
     PrimVersions versions_;
@@ -82,8 +113,18 @@ private:
 
     CommitStats lastCommit_, totals_;
     std::uint64_t commits_ = 0;
-    double lastRenderMs_ = 0.0;
+    std::vector<std::pair<hd::SdfPath, std::size_t>> meshMemory_;  // engine bytes per mesh, last commit
     std::vector<std::string> warnings_;
+
+    // The render thread's job and progress (job_ under jobMutex_).
+    mutable std::mutex jobMutex_;
+    std::optional<RenderJob> job_;
+    std::vector<std::string> renderErrors_;
+    std::chrono::steady_clock::time_point jobStart_;
+    std::atomic<int> passesDone_{0}, passCount_{0};
+    std::atomic<double> lastPassMs_{0.0}, convergedMs_{0.0};
+    std::atomic<bool> converged_{false};
+    RenderThread thread_{[this] { renderJob(); }};  // last: stops before the members it uses go
 };
 
 }  // namespace opal

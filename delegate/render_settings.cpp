@@ -2,6 +2,7 @@
 
 #include "schema/error.h"
 
+#include <algorithm>
 #include <array>
 
 namespace opal {
@@ -13,24 +14,63 @@ const hd::Token Specular = "opal:specular";
 const hd::Token TransparentBackground = "opal:transparentBackground";
 const hd::Token OcioConfig = "opal:ocioConfig";
 const hd::Token TileSize = "opal:tileSize";
+const hd::Token SamplesPerPixel = "opal:samplesPerPixel";
+const hd::Token PixelFilterKey = "opal:pixelFilter";
 
-const std::array<hd::Token, 5> Names = {Reference, Specular, TransparentBackground, OcioConfig, TileSize};
+std::vector<std::string> filterChoices() {
+    std::vector<std::string> choices;
+    for (std::string_view name : pixelFilterNames()) choices.emplace_back(name);
+    return choices;
+}
+
+const std::array<hd::RenderSettingDescriptor, 7>& table() {
+    static const std::array<hd::RenderSettingDescriptor, 7> rows = {{
+        {Reference, "Reference", false, {}, {}, {},
+         "render with the exact dipole gather (O(N^2) per mesh) instead of the relighting engine"},
+        {Specular, "Specular", true, {}, {}, {}, "the GGX specular layer (a material can also turn its own off)"},
+        {TransparentBackground, "Transparent background", false, {}, {}, {},
+         "where no object is hit: colour 0 and alpha 0 instead of the visible domes"},
+        {OcioConfig, "OCIO config", std::string(), {}, {}, {},
+         "the OCIO config dome textures are converted with; empty: $OCIO, else Opal's own"},
+        {TileSize, "Tile size", 32, 1.0, 4096.0, {}, "pixels per side of one render task"},
+        {SamplesPerPixel, "Samples per pixel", 16, 1.0, 1024.0, {},
+         "sub-pixel samples a converged pixel averages (1: the ray through the centre only)"},
+        {PixelFilterKey, "Pixel filter", std::string("box"), {}, {}, filterChoices(),
+         "how a pixel's samples are weighted: box or blackmanHarris"},
+    }};
+    return rows;
+}
 
 [[noreturn]] void unknown(const hd::Token& key) {
     std::string known;
-    for (const hd::Token& name : Names) known += (known.empty() ? "" : ", ") + name;
-    throw Error("Opal render delegate: unknown render setting '" + key + "' (known: " + known +
-                "; read-only statistics start with opal:stats:)");
+    for (const hd::RenderSettingDescriptor& d : table()) known += (known.empty() ? "" : ", ") + d.key;
+    throw Error("Opal render delegate: unknown render setting '" + key + "' (known: " + known + ")");
 }
 
-[[noreturn]] void wrongType(const hd::Token& key, const char* expected, const hd::Value& value) {
-    throw Error("Opal render delegate: render setting '" + key + "' must be " + expected + ", not " +
+[[noreturn]] void wrongType(const hd::Token& key, const hd::Value& expected, const hd::Value& value) {
+    throw Error("Opal render delegate: render setting '" + key + "' must be a" +
+                (expected.index() == 1 ? " bool" : expected.index() == 2 ? "n int" : " string") + ", not " +
                 valueTypeName(value));
 }
 
-bool requireBool(const hd::Token& key, const hd::Value& value) {
-    if (const bool* b = std::get_if<bool>(&value)) return *b;
-    wrongType(key, "a bool", value);
+// The value, checked against the descriptor's type, range and choices.
+const hd::Value& checked(const hd::Token& key, const hd::Value& value) {
+    const auto& rows = table();
+    const auto row = std::find_if(rows.begin(), rows.end(), [&](const auto& d) { return d.key == key; });
+    if (row == rows.end()) unknown(key);
+    if (value.index() != row->defaultValue.index()) wrongType(key, row->defaultValue, value);
+    if (const int* n = std::get_if<int>(&value); n && (*n < *row->min || *n > *row->max))
+        throw Error("Opal render delegate: render setting '" + key + "' must be in [" +
+                    std::to_string(int(*row->min)) + ", " + std::to_string(int(*row->max)) + "], not " +
+                    std::to_string(*n));
+    if (const std::string* s = std::get_if<std::string>(&value);
+        s && !row->choices.empty() && std::find(row->choices.begin(), row->choices.end(), *s) == row->choices.end())
+    {
+        std::string choices;
+        for (const std::string& c : row->choices) choices += (choices.empty() ? "" : ", ") + c;
+        throw Error("Opal render delegate: render setting '" + key + "' is '" + *s + "', not one of " + choices);
+    }
+    return value;
 }
 
 template <typename T>
@@ -52,26 +92,17 @@ std::string valueTypeName(const hd::Value& value) {
     }
 }
 
-std::span<const hd::Token> RenderSettings::names() { return Names; }
+std::span<const hd::RenderSettingDescriptor> RenderSettings::descriptors() { return table(); }
 
 bool RenderSettings::set(const hd::Token& key, const hd::Value& value) {
-    if (key == Reference) return assign(reference, requireBool(key, value));
-    if (key == Specular) return assign(specular, requireBool(key, value));
-    if (key == TransparentBackground) return assign(transparentBackground, requireBool(key, value));
-    if (key == OcioConfig) {
-        const std::string* s = std::get_if<std::string>(&value);
-        if (!s) wrongType(key, "a string (a file path, or empty)", value);
-        return assign(ocioConfig, *s);
-    }
-    if (key == TileSize) {
-        const int* n = std::get_if<int>(&value);
-        if (!n) wrongType(key, "an int", value);
-        if (*n < 1 || *n > 4096)
-            throw Error("Opal render delegate: render setting '" + key + "' must be in [1, 4096], not " +
-                        std::to_string(*n));
-        return assign(tileSize, *n);
-    }
-    unknown(key);
+    const hd::Value& v = checked(key, value);
+    if (key == Reference) return assign(reference, std::get<bool>(v));
+    if (key == Specular) return assign(specular, std::get<bool>(v));
+    if (key == TransparentBackground) return assign(transparentBackground, std::get<bool>(v));
+    if (key == OcioConfig) return assign(ocioConfig, std::get<std::string>(v));
+    if (key == TileSize) return assign(tileSize, std::get<int>(v));
+    if (key == SamplesPerPixel) return assign(samplesPerPixel, std::get<int>(v));
+    return assign(pixelFilter, parsePixelFilter(std::get<std::string>(v)));
 }
 
 hd::Value RenderSettings::get(const hd::Token& key) const {
@@ -80,12 +111,14 @@ hd::Value RenderSettings::get(const hd::Token& key) const {
     if (key == TransparentBackground) return transparentBackground;
     if (key == OcioConfig) return ocioConfig;
     if (key == TileSize) return tileSize;
+    if (key == SamplesPerPixel) return samplesPerPixel;
+    if (key == PixelFilterKey) return std::string(pixelFilterName(pixelFilter));
     unknown(key);
 }
 
 std::map<hd::Token, hd::Value> RenderSettings::all() const {
     std::map<hd::Token, hd::Value> settings;
-    for (const hd::Token& key : Names) settings[key] = get(key);
+    for (const hd::RenderSettingDescriptor& d : table()) settings[d.key] = get(d.key);
     return settings;
 }
 

@@ -1,9 +1,10 @@
-// The render settings of Opal's delegate (delegate/DELEGATE.md lists them): what a host may
-// set through hd::RenderDelegate::setRenderSetting, validated here. Read-only statistics
-// ("opal:stats:...") are the delegate's own (render_delegate.h).
+// The render settings of Opal's delegate: one table of descriptors (name, type, default,
+// range, help; hd::RenderSettingDescriptor) that validation, renderSettings(), hosts'
+// settings panels and delegate/DELEGATE.md derive from.
 #pragma once
 
-#include "delegate/hd/types.h"
+#include "delegate/hd/render_setting_descriptor.h"
+#include "delegate/image/pixel_filter.h"
 
 #include <map>
 #include <span>
@@ -17,9 +18,11 @@ struct RenderSettings {
     bool transparentBackground = false;  // opal:transparentBackground: alpha 0 and no dome behind the objects
     std::string ocioConfig;              // opal:ocioConfig: the OCIO config for dome textures; "" = $OCIO or Opal's
     int tileSize = 32;                   // opal:tileSize: pixels per side of a render task
+    int samplesPerPixel = 16;            // opal:samplesPerPixel: sub-pixel samples a converged pixel holds
+    PixelFilter pixelFilter = PixelFilter::Box;  // opal:pixelFilter
 
-    // Every writable setting's name, in the order DELEGATE.md gives them.
-    static std::span<const hd::Token> names();
+    // Every writable setting, in the order DELEGATE.md gives them.
+    static std::span<const hd::RenderSettingDescriptor> descriptors();
 
     // Throws opal::Error naming the setting for an unknown name (listing the known ones), a
     // value of the wrong type (no conversions: a bool setting takes a bool) or out of range.

@@ -233,4 +233,11 @@ void TranslucentMesh::hide() {
 
 void TranslucentMesh::markCommitted() { topologyChanged_ = transformChanged_ = visibilityChanged_ = false; }
 
+std::size_t TranslucentMesh::memoryBytes() const {
+    std::size_t bytes = engine_ ? engine_->memoryBytes() : 0;
+    if (irradiance_) bytes += irradiance_->memoryBytes();
+    if (vertexIrradiance_) bytes += vertexIrradiance_->capacity() * sizeof(float);
+    return bytes;
+}
+
 }  // namespace opal

@@ -55,6 +55,9 @@ public:
     // the renderer cannot shade (vertex weights or normals that do not match the render
     // mesh) or an unsupported transform; the mesh keeps its previous state then.
     void sync(const hd::SceneDelegate& scene, hd::DirtyBits* dirtyBits) override;
+    hd::DirtyBits initialDirtyBits() const override {
+        return hd::Dirty::Topology | hd::Dirty::Transform | hd::Dirty::Material | hd::Dirty::Visibility;
+    }
 
     const hd::MeshDesc& desc() const { return desc_; }
     bool visible() const { return desc_.visible && desc_.asset != nullptr; }
@@ -71,6 +74,9 @@ public:
     void hide();
     // Clears the changes of the last sync (after a successful commit).
     void markCommitted();
+
+    // Bytes held by the mesh's relighting (engine and irradiance), 0 when hidden.
+    std::size_t memoryBytes() const;
 
     // What the renderer shades; null until the mesh was relit once.
     std::shared_ptr<const MeshShading> shading() const { return shading_; }

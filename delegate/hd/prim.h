@@ -18,6 +18,9 @@ public:
     const SdfPath& id() const { return id_; }
     // Pull what `*dirtyBits` says changed; leave *dirtyBits == Dirty::Clean.
     virtual void sync(const SceneDelegate& scene, DirtyBits* dirtyBits) = 0;
+    // What the first sync pulls (Hydra's GetInitialDirtyBitsMask): the render index marks a
+    // new prim with these.
+    virtual DirtyBits initialDirtyBits() const = 0;
 
 private:
     SdfPath id_;

@@ -8,15 +8,17 @@ RenderIndex::~RenderIndex() {
     // Rprims refer to Sprims (materials) and Sprims to nothing: destroy in reverse order.
     for (int order = 2; order >= 0; --order)
         for (auto& [id, entry] : prims_)
-            if (entry.order == order) entry.prim.reset();
+            if (entry.order == order) delegate_.destroyPrim(std::move(entry.prim));
+    delegate_.finalizeRenderIndex(*this);
 }
 
 void RenderIndex::insert(const Token& type, const SceneDelegate& scene, const SdfPath& id,
                          std::unique_ptr<Prim> prim, int order) {
     if (!prim) throw Error("render index: the render delegate does not support prim type '" + type + "' (" + id + ")");
     if (prims_.count(id)) throw Error("render index: a prim '" + id + "' exists already");
+    const DirtyBits initial = prim->initialDirtyBits();
     prims_.emplace(id, Entry{type, &scene, std::move(prim), order});
-    tracker_.markDirty(id, Dirty::AllDirty);
+    if (initial != Dirty::Clean) tracker_.markDirty(id, initial);
 }
 
 void RenderIndex::insertRprim(const Token& type, const SceneDelegate& scene, const SdfPath& id) {
@@ -32,8 +34,12 @@ void RenderIndex::insertBprim(const Token& type, const SceneDelegate& scene, con
 }
 
 void RenderIndex::removePrim(const SdfPath& id) {
-    prims_.erase(id);
+    const auto it = prims_.find(id);
+    if (it == prims_.end()) return;
+    std::unique_ptr<Prim> prim = std::move(it->second.prim);
+    prims_.erase(it);
     tracker_.remove(id);
+    delegate_.destroyPrim(std::move(prim));
 }
 
 void RenderIndex::sync() {

@@ -9,7 +9,7 @@
 namespace opal::hd {
 
 struct AovBinding {
-    Token aov;                      // one of hd::Aov
+    Token aov;                      // an AOV name (hd/aov.h)
     RenderBuffer* buffer = nullptr; // allocated by the pass to the viewport size
 };
 
@@ -21,7 +21,12 @@ struct RenderPassState {
 class RenderPass {
 public:
     virtual ~RenderPass() = default;
+    // Starts (or goes on) rendering the index's current state into the buffers and returns;
+    // a render thread fills them (RenderBuffer::map reads them meanwhile). Called again with
+    // nothing changed, it lets the running frame go on.
     virtual void execute(const RenderPassState& state, const std::vector<AovBinding>& aovs) = 0;
+    // Whether every bound buffer holds its final values for the last execute.
+    virtual bool isConverged() const = 0;
 };
 
 }  // namespace opal::hd

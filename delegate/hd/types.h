@@ -27,16 +27,5 @@ inline const Token ShadowFieldLight = "opalShadowFieldLight";
 inline const Token RenderBuffer = "renderBuffer";
 }  // namespace PrimType
 
-// AOV names a render pass can fill.
-namespace Aov {
-inline const Token Color = "color";
-inline const Token Subsurface = "subsurface";
-inline const Token Specular = "specular";
-inline const Token Irradiance = "irradiance";
-inline const Token Normal = "normal";
-inline const Token Depth = "depth";
-inline const Token PrimId = "primId";
-inline const Token Alpha = "alpha";
-}  // namespace Aov
 
 }  // namespace opal::hd

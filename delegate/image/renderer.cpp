@@ -2,6 +2,7 @@
 
 #include "delegate/image/dome_lookup.h"
 #include "delegate/image/fresnel_table.h"
+#include "delegate/image/sample_pattern.h"
 
 #include "delegate/image/specular.h"
 #include "schema/error.h"
@@ -17,6 +18,7 @@
 #endif
 
 #include <algorithm>
+#include <atomic>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -39,9 +41,6 @@ constexpr double kShadowOffset = 1e-4;
 constexpr int kBlockWidth = 4, kBlockHeight = 4;
 constexpr int kBlockPixels = kBlockWidth * kBlockHeight;
 static_assert(kBlockPixels == int(RayScene::kPacketSize));
-
-const std::array<hd::Token, 8> Aovs = {hd::Aov::Color,  hd::Aov::Subsurface, hd::Aov::Specular, hd::Aov::Irradiance,
-                                       hd::Aov::Normal, hd::Aov::Depth,      hd::Aov::PrimId,   hd::Aov::Alpha};
 
 struct Pixel {
     Imath::V3f subsurface{0.0f}, specular{0.0f}, irradiance{0.0f}, normal{0.0f}, background{0.0f};
@@ -121,6 +120,7 @@ struct Surface {
 
 struct Block {
     int count = 0;
+    Imath::V2f offset{0.5f, 0.5f};  // the pass's sample position inside each pixel
     std::array<int, kBlockPixels> x{}, y{};
     std::array<Ray, kBlockPixels> rays;
     std::array<std::optional<RayHit>, kBlockPixels> hits;
@@ -280,7 +280,7 @@ void prefetchVertices(const FrameContext& context, const Block& block) {
 
 void shadeBlock(const FrameContext& context, Block& block) {
     for (int i = 0; i < block.count; ++i) {
-        block.rays[i] = context.camera.ray(block.x[i] + 0.5, block.y[i] + 0.5);
+        block.rays[i] = context.camera.ray(block.x[i] + block.offset.x, block.y[i] + block.offset.y);
         block.pixels[i] = Pixel{};
         block.surfaces[i] = Surface{};
     }
@@ -303,77 +303,81 @@ void shadeBlock(const FrameContext& context, Block& block) {
     if (specular) shadeSpecular(context, block);
 }
 
-// A fixed channel count, assigned one by one: the compiler writes them in place (std::copy_n
-// of a few floats becomes a call to memmove).
-template <int Channels>
-void store(float* target, std::size_t index, const float* values) {
-    if (!target) return;
-    float* out = target + index * Channels;
-    for (int c = 0; c < Channels; ++c) out[c] = values[c];
+// One AOV's values at a shaded sample (hd::aovTable's channels).
+const float* aovValues(const Pixel& p, hd::AovId aov, std::array<float, 4>& scratch) {
+    using enum hd::AovId;
+    switch (aov) {
+        case Color: {
+            const Imath::V3f c = p.hit ? p.subsurface + p.specular : p.background;
+            scratch = {c.x, c.y, c.z, p.alpha};
+            return scratch.data();
+        }
+        case Subsurface: return &p.subsurface.x;
+        case Specular: return &p.specular.x;
+        case Irradiance: return &p.irradiance.x;
+        case Normal: return &p.normal.x;
+        case Depth: return &p.depth;
+        case PrimId: return &p.primId;
+        case Alpha: return &p.alpha;
+    }
+    return nullptr;
 }
 
-void write(const AovTargets& t, std::size_t index, const Pixel& p) {
-    const Imath::V3f color = p.hit ? p.subsurface + p.specular : p.background;
-    const float rgba[4] = {color.x, color.y, color.z, p.alpha};
-    store<4>(t.color, index, rgba);
-    store<3>(t.subsurface, index, &p.subsurface.x);
-    store<3>(t.specular, index, &p.specular.x);
-    store<3>(t.irradiance, index, &p.irradiance.x);
-    store<3>(t.normal, index, &p.normal.x);
-    store<1>(t.depth, index, &p.depth);
-    store<1>(t.primId, index, &p.primId);
-    store<1>(t.alpha, index, &p.alpha);
-}
-
-}  // namespace
-
-std::span<const hd::Token> supportedAovs() { return Aovs; }
-
-int aovChannelCount(const hd::Token& aov) {
-    if (aov == hd::Aov::Color) return 4;
-    if (aov == hd::Aov::Subsurface || aov == hd::Aov::Specular || aov == hd::Aov::Irradiance || aov == hd::Aov::Normal)
-        return 3;
-    if (aov == hd::Aov::Depth || aov == hd::Aov::PrimId || aov == hd::Aov::Alpha) return 1;
-    return 0;
-}
-
-// A tile's AOVs, written in cache and then streamed to the frame's buffers row by row with
-// non-temporal stores: plain stores would first read every line of the frame's AOVs (70 MB
-// at 720p with every AOV) into the cache only to overwrite it.
+// A tile's AOVs, shaded into cache and then written to the frame's buffers row by row, the
+// whole tile under the buffer's tile lock (hd::RenderBuffer::writeTiles). Pass 0 replaces
+// the pixels with non-temporal stores: plain stores would first read every line of the
+// frame's AOVs (70 MB at 720p with every AOV) into the cache only to overwrite it. Later
+// passes move each filtered AOV toward the new sample: v += (w_p / W_p)(s - v), the running
+// form of sum w_i s_i / sum w_i with W_p = w_1 + ... + w_p.
 class TileAovs {
 public:
-    TileAovs(const AovTargets& frame, int tileWidth, int tileHeight) : frame_(frame), tileWidth_(tileWidth) {
+    TileAovs(const AovTargets& frame, int pass, int tileWidth, int tileHeight)
+        : frame_(frame), pass_(pass), tileWidth_(tileWidth) {
         const std::size_t pixels = std::size_t(tileWidth) * tileHeight;
-        for (std::size_t a = 0; a < kAovs; ++a)
-            if (frame_.*kMembers[a]) {
-                storage_[a].assign(pixels * kChannels[a], 0.0f);
-                local_.*kMembers[a] = storage_[a].data();
-            }
+        for (std::size_t a = 0; a < hd::kAovCount; ++a)
+            if (written(a)) storage_[a].assign(pixels * std::size_t(channels(a)), 0.0f);
     }
-    // Where write() puts the tile's pixels: index (y - y0) tileWidth + (x - x0).
-    const AovTargets& local() const { return local_; }
 
-    // Rows [y0, y1) x columns [x0, x1) of the tile into the frame (frameWidth pixels a row).
-    void flush(int x0, int y0, int x1, int y1, int frameWidth) const {
-        for (std::size_t a = 0; a < kAovs; ++a) {
-            float* target = frame_.*kMembers[a];
-            if (!target) continue;
-            const std::size_t c = kChannels[a], count = std::size_t(x1 - x0) * c;
-            for (int y = y0; y < y1; ++y)
-                streamCopy(storage_[a].data() + std::size_t(y - y0) * tileWidth_ * c,
-                           target + (std::size_t(y) * frameWidth + x0) * c, count);
+    // The sample of tile pixel `index` ((y - y0) tileWidth + (x - x0)).
+    void set(std::size_t index, const Pixel& pixel) {
+        std::array<float, 4> scratch;
+        for (std::size_t a = 0; a < hd::kAovCount; ++a) {
+            if (storage_[a].empty()) continue;
+            const int c = channels(a);
+            const float* values = aovValues(pixel, hd::AovId(a), scratch);
+            float* out = storage_[a].data() + index * std::size_t(c);
+            for (int k = 0; k < c; ++k) out[k] = values[k];
         }
+    }
+
+    // Rows [y0, y1) x columns [x0, x1) of the tile into the frame; `blend` = w_p / W_p.
+    void flush(int x0, int y0, int x1, int y1, float blend) const {
+        for (std::size_t a = 0; a < hd::kAovCount; ++a) {
+            if (storage_[a].empty()) continue;
+            hd::RenderBuffer& buffer = *frame_[a];
+            const std::size_t c = std::size_t(channels(a)), count = std::size_t(x1 - x0) * c;
+            buffer.writeTiles([&](float* target) {
+                for (int y = y0; y < y1; ++y) {
+                    const float* from = storage_[a].data() + std::size_t(y - y0) * tileWidth_ * c;
+                    float* to = target + (std::size_t(y) * buffer.width() + x0) * c;
+                    if (pass_ == 0 || blend == 1.0f)
+                        streamCopy(from, to, count);
+                    else
+                        for (std::size_t i = 0; i < count; ++i) to[i] += blend * (from[i] - to[i]);
+                }
 #if OPAL_STREAMING_STORES
-        _mm_sfence();  // the streamed rows are visible before the task ends
+                _mm_sfence();  // the streamed rows are visible before the lock is released
 #endif
+            });
+        }
     }
 
 private:
-    static constexpr std::size_t kAovs = 8;
-    static constexpr std::array<float* AovTargets::*, kAovs> kMembers = {
-        &AovTargets::color,  &AovTargets::subsurface, &AovTargets::specular, &AovTargets::irradiance,
-        &AovTargets::normal, &AovTargets::depth,      &AovTargets::primId,   &AovTargets::alpha};
-    static constexpr std::array<std::size_t, kAovs> kChannels = {4, 3, 3, 3, 3, 1, 1, 1};
+    static int channels(std::size_t a) { return hd::aovDescriptor(hd::AovId(a)).channelCount(); }
+    // Pass 0 writes every bound AOV, later passes the filtered ones.
+    bool written(std::size_t a) const {
+        return frame_[a] && (pass_ == 0 || hd::aovDescriptor(hd::AovId(a)).sampling == hd::AovSampling::Filtered);
+    }
 
     // to[0, n) = from[0, n): plain stores up to a 16-byte boundary, then 4 floats a store.
     static void streamCopy(const float* from, float* to, std::size_t n) {
@@ -386,40 +390,58 @@ private:
     }
 
     const AovTargets& frame_;
+    int pass_;
     int tileWidth_;
-    AovTargets local_;
-    std::array<std::vector<float>, kAovs> storage_;
+    std::array<std::vector<float>, hd::kAovCount> storage_;
 };
-
-namespace {
 
 // Debug builds check what a pass wrote: every radiometric AOV finite (light_emission.h keeps
 // every sum in range; the relight engine refuses non-finite radiance). Tests check the same
 // on Release builds through the buffers.
-[[maybe_unused]] void requireFiniteRadiometric(const AovTargets& t, std::size_t pixels) {
-    const std::pair<const float*, std::size_t> radiometric[] = {
-        {t.color, 4}, {t.subsurface, 3}, {t.specular, 3}, {t.irradiance, 3}, {t.alpha, 1}};
-    for (const auto& [values, channels] : radiometric) {
-        if (!values) continue;
-        for (std::size_t i = 0; i < pixels * channels; ++i)
+[[maybe_unused]] void requireFiniteRadiometric(const AovTargets& targets) {
+    for (std::size_t a = 0; a < hd::kAovCount; ++a) {
+        const hd::AovDescriptor& aov = hd::aovDescriptor(hd::AovId(a));
+        if (!targets[a] || aov.sampling != hd::AovSampling::Filtered) continue;
+        const std::span<const float> values = targets[a]->data();
+        for (std::size_t i = 0; i < values.size(); ++i)
             if (!std::isfinite(values[i]))
-                throw Error("renderer: pixel " + std::to_string(i / channels) + " of a radiometric AOV is not finite");
+                throw Error("renderer: pixel " + std::to_string(i / std::size_t(aov.channelCount())) + " of AOV " +
+                            aov.name + " is not finite");
     }
+}
+
+// Pass p's sample position and its blend weight w_p / W_p (1 for passes 0 and 1).
+std::pair<Imath::V2f, float> passSample(const RenderOptions& options, int pass) {
+    if (pass == 0) return {Imath::V2f(0.5f, 0.5f), 1.0f};
+    double total = 0.0;
+    for (int p = 1; p <= pass; ++p) total += filterWeight(options.filter, samplePosition(std::uint32_t(p - 1)));
+    const Imath::V2f position = samplePosition(std::uint32_t(pass - 1));
+    return {position, float(filterWeight(options.filter, position) / total)};
 }
 
 }  // namespace
 
-void renderFrame(const Frame& frame, const CameraView& camera, const RenderOptions& options, const AovTargets& targets) {
+int passCount(const RenderOptions& options) { return options.samplesPerPixel >= 2 ? options.samplesPerPixel + 1 : 1; }
+
+bool renderPass(const Frame& frame, const CameraView& camera, const RenderOptions& options, const AovTargets& targets,
+                int pass, const std::function<bool()>& stop) {
     const FrameContext context = frameContext(frame, camera, options);
+    const auto [offset, blend] = passSample(options, pass);
     const int width = camera.width(), height = camera.height();
     // Tiles are whole blocks, so a block never straddles two tiles.
     const int tileWidth = std::max(kBlockWidth, options.tileSize / kBlockWidth * kBlockWidth);
     const int tileHeight = std::max(kBlockHeight, options.tileSize / kBlockHeight * kBlockHeight);
     const int tilesX = (width + tileWidth - 1) / tileWidth, tilesY = (height + tileHeight - 1) / tileHeight;
+    std::atomic<bool> stopped{false};
     tbb::parallel_for(tbb::blocked_range<int>(0, tilesX * tilesY), [&](const tbb::blocked_range<int>& range) {
         Block block;
-        TileAovs tile(targets, tileWidth, tileHeight);
+        block.offset = offset;
+        TileAovs tile(targets, pass, tileWidth, tileHeight);
         for (int t = range.begin(); t != range.end(); ++t) {
+            if (stopped.load(std::memory_order_relaxed) || (stop && stop())) {
+                stopped = true;
+                return;
+            }
             const int x0 = (t % tilesX) * tileWidth, y0 = (t / tilesX) * tileHeight;
             const int x1 = std::min(x0 + tileWidth, width), y1 = std::min(y0 + tileHeight, height);
             for (int by = y0; by < y1; by += kBlockHeight)
@@ -432,15 +454,15 @@ void renderFrame(const Frame& frame, const CameraView& camera, const RenderOptio
                         }
                     shadeBlock(context, block);
                     for (int i = 0; i < block.count; ++i)
-                        write(tile.local(), std::size_t(block.y[i] - y0) * tileWidth + (block.x[i] - x0),
-                              block.pixels[i]);
+                        tile.set(std::size_t(block.y[i] - y0) * tileWidth + (block.x[i] - x0), block.pixels[i]);
                 }
-            tile.flush(x0, y0, x1, y1, width);
+            tile.flush(x0, y0, x1, y1, blend);
         }
     });
 #ifndef NDEBUG
-    requireFiniteRadiometric(targets, std::size_t(width) * std::size_t(height));
+    if (!stopped) requireFiniteRadiometric(targets);
 #endif
+    return !stopped;
 }
 
 }  // namespace opal

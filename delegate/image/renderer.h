@@ -11,14 +11,17 @@
 #include "delegate/relight/analytic_light.h"
 #include "delegate/image/camera_view.h"
 #include "delegate/relight/environment_light.h"
-#include "delegate/hd/types.h"
+#include "delegate/hd/aov.h"
+#include "delegate/hd/render_buffer.h"
+#include "delegate/image/pixel_filter.h"
 #include "raytrace/ray_scene.h"
 #include "schema/asset/translucent_asset.h"
 
 #include <Imath/ImathMatrix.h>
 
+#include <array>
+#include <functional>
 #include <memory>
-#include <span>
 #include <vector>
 
 namespace opal {
@@ -56,25 +59,26 @@ struct RenderOptions {
     bool specular = true;
     bool transparentBackground = false;
     int tileSize = 32;
+    int samplesPerPixel = 16;
+    PixelFilter filter = PixelFilter::Box;
 };
 
-// Where each AOV goes (row-major, row 0 at the top, width x height x channels); null
-// targets are skipped. Channel counts: aovChannelCount.
-struct AovTargets {
-    float* color = nullptr;       // R G B A
-    float* subsurface = nullptr;  // R G B
-    float* specular = nullptr;    // R G B
-    float* irradiance = nullptr;  // R G B
-    float* normal = nullptr;      // X Y Z
-    float* depth = nullptr;       // Z
-    float* primId = nullptr;      // id
-    float* alpha = nullptr;       // A
-};
+// The buffer each AOV goes to (hd::AovId order); null: not rendered. Each must be allocated
+// to the camera's size with the AOV's channel count.
+using AovTargets = std::array<hd::RenderBuffer*, hd::kAovCount>;
 
-// The AOVs Opal fills (hd::Aov), and the channels of each; 0 for an unknown name.
-std::span<const hd::Token> supportedAovs();
-int aovChannelCount(const hd::Token& aov);
+// Image formation is progressive: pass 0 traces the ray through each pixel's centre and
+// writes every bound AOV (the nearest ones, depth, primId and normal, only then); with
+// samplesPerPixel >= 2, passes 1..samplesPerPixel each trace sample p - 1 of the pixel's
+// pattern (sample_pattern.h) and update the filtered AOVs to the filter-weighted mean of
+// the samples so far (pixel_filter.h), which pass 1 starts afresh. So the image after pass
+// 0 is the single-sample image, and the converged one holds samplesPerPixel samples.
+int passCount(const RenderOptions& options);
 
-void renderFrame(const Frame& frame, const CameraView& camera, const RenderOptions& options, const AovTargets& targets);
+// Renders pass `pass` tile by tile into the targets (each tile written whole, under the
+// buffer's tile lock). Before each tile it asks `stop`: when that says true the pass ends
+// there and renderPass returns false; true when every tile was rendered.
+bool renderPass(const Frame& frame, const CameraView& camera, const RenderOptions& options, const AovTargets& targets,
+                int pass, const std::function<bool()>& stop = {});
 
 }  // namespace opal

@@ -60,7 +60,7 @@ void validate(std::span<const AovLayer> layers, const ExrMetadata& metadata) {
 }
 
 Imf::PixelType pixelType(const AovLayer& layer, const ExrOptions& options) {
-    if (layer.storage == AovStorage::Exact) return Imf::FLOAT;
+    if (layer.format == hd::AovFormat::Float32) return Imf::FLOAT;
     return options.colorPixelType == ExrPixelType::Half ? Imf::HALF : Imf::FLOAT;
 }
 

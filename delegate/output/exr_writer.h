@@ -19,7 +19,7 @@ enum class ExrPixelType { Half, Float };
 enum class ExrCompression { Zip, Piz };
 
 struct ExrOptions {
-    ExrPixelType colorPixelType = ExrPixelType::Half;  // AovStorage::Exact is always float
+    ExrPixelType colorPixelType = ExrPixelType::Half;  // hd::AovFormat::Float32 is always float
     ExrCompression compression = ExrCompression::Zip;
 };
 

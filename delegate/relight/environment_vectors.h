@@ -41,6 +41,13 @@ public:
     // Throws opal::Error when the moments or the radiance do not match.
     void addIrradiance(std::span<const float> haarRadiance, IrradianceMoments& moments) const;
 
+    // Bytes of the compact vectors.
+    std::size_t memoryBytes() const {
+        return offsets_.capacity() * sizeof(std::uint64_t) + positions16_.capacity() * sizeof(std::uint16_t) +
+               positions32_.capacity() * sizeof(std::uint32_t) + halves_.capacity() * sizeof(std::uint16_t) +
+               scales_.capacity() * sizeof(float);
+    }
+
 private:
     template <typename Index, std::uint32_t M>
     void addRows(const Index* positions, const float* radiance, IrradianceMoments& moments) const;

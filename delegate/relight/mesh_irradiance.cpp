@@ -106,4 +106,13 @@ std::vector<float> MeshIrradiance::exactIrradiance(double eta) const {
     return rgb;
 }
 
+std::size_t MeshIrradiance::memoryBytes() const {
+    const auto moments = [](const IrradianceMoments& m) { return m.values.capacity() * sizeof(float); };
+    std::size_t bytes = (placed_.positions.capacity() + placed_.normals.capacity()) * sizeof(Imath::V3f) + moments(total_);
+    if (environment_) bytes += environment_->memoryBytes();
+    for (const auto& [path, contribution] : lights_)
+        bytes += moments(contribution.moments) + contribution.arrivals.capacity() * sizeof(LightArrival);
+    return bytes;
+}
+
 }  // namespace opal

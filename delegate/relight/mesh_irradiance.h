@@ -44,6 +44,8 @@ public:
     // domes (their Fresnel factor is only known in moment form): samples x 3, the input of
     // the reference gather.
     std::vector<float> exactIrradiance(double eta) const;
+    // Bytes held: the placed samples, each light's moments and arrivals, the dome vectors.
+    std::size_t memoryBytes() const;
 
 private:
     using Source = std::variant<AnalyticLight, std::shared_ptr<const EnvironmentLight>>;

@@ -195,4 +195,19 @@ void interpolateToVertices(const VertexWeights& weights, std::span<const float> 
     if (outOfRange) throw Error("vertex weights: a sample index is not below the " + std::to_string(samples) + " samples");
 }
 
+namespace {
+
+template <typename T>
+std::size_t bytesOf(const std::vector<T>& v) {
+    return v.capacity() * sizeof(T);
+}
+
+}  // namespace
+
+std::size_t RelightEngine::memoryBytes() const {
+    return product_.memoryBytes() + bytesOf(moments_.values) + bytesOf(haar_) + bytesOf(products_) +
+           bytesOf(weighted_) + bytesOf(fresnel_) + bytesOf(profile_) + bytesOf(radiance_) + bytesOf(irradiance_) +
+           bytesOf(*vertexRadiance_) + (spareVertexRadiance_ ? bytesOf(*spareVertexRadiance_) : 0) + bytesOf(padded_);
+}
+
 }  // namespace opal

@@ -51,6 +51,8 @@ public:
     std::shared_ptr<const std::vector<float>> sharedVertexRadiance() const { return vertexRadiance_; }
     // E(x_i; eta) = sum_m c_m(eta) E_m(x_i): samples x 3.
     std::span<const float> sampleIrradiance() const { return irradiance_; }
+    // Bytes the engine holds beyond the asset: the compact transfer, products, radiance.
+    std::size_t memoryBytes() const;
 
 private:
     void formRadiance(bool reweigh);  // L = w1^-1 ((1/pi) sum_k s_k z_k), then the vertices

@@ -185,4 +185,12 @@ void TransferProduct::multiplyRows(const float* x, std::size_t lanes, float* y, 
     }
 }
 
+std::size_t TransferProduct::memoryBytes() const {
+    std::size_t bytes = matrices_.capacity() * sizeof(Matrix);
+    for (const Matrix& m : matrices_)
+        bytes += m.rowOffsets.capacity() * sizeof(std::uint64_t) + m.columns16.capacity() * sizeof(std::uint16_t) +
+                 m.columns32.capacity() * sizeof(std::uint32_t) + m.halves.capacity() * sizeof(std::uint16_t);
+    return bytes;
+}
+
 }  // namespace opal

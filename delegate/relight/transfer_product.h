@@ -37,6 +37,8 @@ public:
     TransferProduct(const CompressedTransfer& transfer, std::size_t samples, Kernel kernel = Kernel::Best);
 
     Kernel kernel() const { return kernel_; }
+    // Bytes of the compact matrices (what the delegate reports per mesh).
+    std::size_t memoryBytes() const;
 
     std::size_t matrices() const { return matrices_.size(); }
     std::size_t samples() const { return samples_; }

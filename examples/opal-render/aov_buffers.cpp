@@ -7,7 +7,7 @@
 namespace opal::render {
 namespace {
 
-const std::string ColorAov = hd::Aov::Color;
+const std::string ColorAov = "color";
 
 bool contains(const std::vector<std::string>& names, const std::string& name) {
     return std::find(names.begin(), names.end(), name) != names.end();
@@ -18,10 +18,10 @@ bool contains(const std::vector<std::string>& names, const std::string& name) {
 AovBuffers::AovBuffers(const std::vector<std::string>& requested, bool needColor) {
     std::vector<std::string> names = requested;
     if (names.empty())
-        for (std::string_view standard : standardAovNames()) names.emplace_back(standard);
+        for (const hd::AovDescriptor& aov : hd::aovTable()) names.push_back(aov.name);
     for (const std::string& name : names) {
         if (contains(written_, name)) continue;
-        if (name == hd::Aov::Alpha && contains(names, ColorAov)) continue;  // color's A
+        if (name == "alpha" && contains(names, ColorAov)) continue;  // color's A
         written_.push_back(name);
     }
     for (const std::string& name : written_)

@@ -15,7 +15,7 @@ namespace opal::render {
 class AovBuffers {
 public:
     // `requested`: AOV names in the order they should be written, each one of
-    // standardAovNames() (duplicates ignored); empty means all of them.
+    // hd::aovTable() (duplicates ignored); empty means all of them.
     AovBuffers(const std::vector<std::string>& requested, bool needColor);
 
     const std::vector<std::string>& written() const { return written_; }

@@ -1,7 +1,7 @@
 // opal-render: renders a scene layer (examples/SCENES.md) through a render delegate found by
 // the plugin registry into a scene-linear multi-layer EXR, plus an optional display-referred
 // preview. Exit codes: 0 success, 1 error (nothing written), 2 bad command line.
-#include "delegate/output/aov_layer.h"
+#include "delegate/hd/aov.h"
 #include "examples/opal-render/render_command.h"
 #include "examples/scene/scene_material.h"
 #include "schema/error.h"
@@ -15,9 +15,11 @@ namespace {
 constexpr int ExitError = 1;
 constexpr int ExitUsage = 2;
 
+// hd/aov.h's table: the AOVs every Opal delegate renders.
 std::vector<std::string> aovNames() {
-    const auto names = opal::standardAovNames();
-    return {names.begin(), names.end()};
+    std::vector<std::string> names;
+    for (const opal::hd::AovDescriptor& aov : opal::hd::aovTable()) names.push_back(aov.name);
+    return names;
 }
 
 std::vector<std::string> presetNames() {

@@ -3,6 +3,7 @@
 #include "delegate/output/color_config.h"
 #include "delegate/output/display_transform.h"
 #include "delegate/hd/render_index.h"
+#include "delegate/hd/render_to_convergence.h"
 #include "examples/opal-render/aov_buffers.h"
 #include "examples/opal-render/frame_files.h"
 #include "examples/opal-render/stage_timer.h"
@@ -77,7 +78,7 @@ void renderFrame(hd::RenderDelegate& delegate, scene::Scene scene, const scene::
     state.camera = setup.camera;
     state.width = setup.resolution.width;
     state.height = setup.resolution.height;
-    pass->execute(state, buffers.bindings());
+    hd::renderToConvergence(delegate, *pass, state, buffers.bindings());
     for (const std::string& warning : delegate.takeWarnings()) warnings << "opal-render: warning: " << warning << '\n';
     timer.lap("render");
 }
@@ -94,6 +95,8 @@ ExrMetadata frameMetadata(const RenderOptions& options, const scene::RenderSetup
         if (const double* d = std::get_if<double>(&value)) metadata.emplace_back(name, float(*d));
         if (const std::string* t = std::get_if<std::string>(&value)) metadata.emplace_back(name, *t);
     }
+    // OpenEXR's convention, said in the file: colour is premultiplied by alpha.
+    metadata.emplace_back("alpha", "premultiplied: R, G, B are radiance times A (OpenEXR convention)");
     metadata.emplace_back("scene", std::filesystem::absolute(options.scene).lexically_normal().string());
     metadata.emplace_back("camera", setup.camera);
     metadata.emplace_back("resolution",

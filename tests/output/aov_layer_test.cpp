@@ -32,9 +32,9 @@ TEST(AovLayer, StandardChannelNames) {
 }
 
 TEST(AovLayer, DepthAndIdsAreStoredExactly) {
-    EXPECT_EQ(makeAovLayer("depth", Image(1, 1, 1)).storage, AovStorage::Exact);
-    EXPECT_EQ(makeAovLayer("primId", Image(1, 1, 1)).storage, AovStorage::Exact);
-    EXPECT_EQ(makeAovLayer("color", Image(1, 1, 4)).storage, AovStorage::Color);
+    EXPECT_EQ(makeAovLayer("depth", Image(1, 1, 1)).format, hd::AovFormat::Float32);
+    EXPECT_EQ(makeAovLayer("primId", Image(1, 1, 1)).format, hd::AovFormat::Float32);
+    EXPECT_EQ(makeAovLayer("color", Image(1, 1, 4)).format, hd::AovFormat::Float16);
 }
 
 TEST(AovLayer, UnknownNameListsTheKnownOnes) {

@@ -89,7 +89,7 @@ ReadBack readExr(const std::filesystem::path& file) {
 // Every channel of every layer, at half or float precision.
 void expectPixels(const ReadBack& r, const std::vector<AovLayer>& layers, bool colorIsHalf) {
     for (const AovLayer& layer : layers) {
-        const bool half = colorIsHalf && layer.storage == AovStorage::Color;
+        const bool half = colorIsHalf && layer.format == hd::AovFormat::Float16;
         for (std::size_t c = 0; c < layer.channels.size(); ++c) {
             const std::string name = layer.exrChannelName(c);
             ASSERT_GE(r.channel(name), 0) << name;

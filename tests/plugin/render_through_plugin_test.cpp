@@ -62,7 +62,7 @@ void renderAndCheck(hd::RenderDelegate& delegate, float r, float g, float b) {
     state.camera = "/World/Camera";
     state.width = 5;
     state.height = 3;
-    pass->execute(state, {{hd::Aov::Color, color}, {hd::Aov::Depth, depth}});
+    pass->execute(state, {{"color", color}, {"depth", depth}});
 
     ASSERT_EQ(color->width(), 5);
     ASSERT_EQ(color->height(), 3);

@@ -40,7 +40,9 @@ TEST(RenderDelegate, CreatesItsPrimTypesAndNothingElse) {
 TEST(RenderDelegate, RenderSettingsAreValidatedAndNamed) {
     OpalRenderDelegate delegate;
     const std::map<hd::Token, hd::Value> settings = delegate.renderSettings();
-    ASSERT_EQ(settings.size(), 5u);
+    ASSERT_EQ(settings.size(), 7u);
+    EXPECT_EQ(std::get<int>(settings.at("opal:samplesPerPixel")), 16);
+    EXPECT_EQ(std::get<std::string>(settings.at("opal:pixelFilter")), "box");
     EXPECT_EQ(std::get<bool>(settings.at("opal:reference")), false);
     EXPECT_EQ(std::get<bool>(settings.at("opal:specular")), true);
     EXPECT_EQ(std::get<bool>(settings.at("opal:transparentBackground")), false);
@@ -60,13 +62,12 @@ TEST(RenderDelegate, RenderSettingsAreValidatedAndNamed) {
     EXPECT_TRUE(contains(m, "opal:specular") && contains(m, "bool") && contains(m, "int")) << m;
     m = messageOf([&] { delegate.setRenderSetting("opal:tileSize", 0); });
     EXPECT_TRUE(contains(m, "opal:tileSize")) << m;
-    m = messageOf([&] { delegate.setRenderSetting("opal:stats:commitMs", 1.0); });
-    EXPECT_TRUE(contains(m, "read-only")) << m;
     EXPECT_THROW(OpalRenderDelegate({{"opal:bogus", true}}), Error);
 
-    for (const hd::Token& name : OpalRenderDelegate::statisticNames())
-        EXPECT_NO_THROW((void)delegate.renderSetting(name)) << name;
-    EXPECT_THROW((void)delegate.renderSetting("opal:stats:bogus"), Error);
+    m = messageOf([&] { delegate.setRenderSetting("opal:pixelFilter", std::string("gauss")); });
+    EXPECT_TRUE(contains(m, "gauss") && contains(m, "blackmanHarris")) << m;
+    m = messageOf([&] { delegate.setRenderSetting("opal:samplesPerPixel", 0); });
+    EXPECT_TRUE(contains(m, "opal:samplesPerPixel") && contains(m, "[1, 1024]")) << m;
 }
 
 TEST(RenderDelegate, AllocatesEveryAovWithItsChannels) {
@@ -102,15 +103,15 @@ TEST(RenderDelegate, RenderPassErrorsNameWhatIsWrong) {
     hd::RenderBuffer buffer("/b");
     hd::RenderPassState state;
     state.camera = "/World/NoSuchCamera";
-    std::string m = messageOf([&] { pass->execute(state, {{hd::Aov::Color, &buffer}}); });
+    std::string m = messageOf([&] { pass->execute(state, {{"color", &buffer}}); });
     EXPECT_TRUE(contains(m, "/World/NoSuchCamera")) << m;
     state.camera = test::CameraPath;
     m = messageOf([&] { pass->execute(state, {{"beauty", &buffer}}); });
     EXPECT_TRUE(contains(m, "unknown AOV 'beauty'") && contains(m, "subsurface")) << m;
-    m = messageOf([&] { pass->execute(state, {{hd::Aov::Depth, nullptr}}); });
+    m = messageOf([&] { pass->execute(state, {{"depth", nullptr}}); });
     EXPECT_TRUE(contains(m, "depth")) << m;
     state.width = 0;
-    m = messageOf([&] { pass->execute(state, {{hd::Aov::Color, &buffer}}); });
+    m = messageOf([&] { pass->execute(state, {{"color", &buffer}}); });
     EXPECT_TRUE(contains(m, test::CameraPath)) << m;
 }
 

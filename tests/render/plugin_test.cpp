@@ -55,10 +55,10 @@ TEST(RendererPlugin, RendersLikeTheDelegateItself) {
         images.push_back(test::renderAovs(*delegate, index, test::CameraPath, 40, 30));
     }
     const test::Aovs& a = images[0];
-    EXPECT_GT(test::sumRgb(a, hd::Aov::Color, 20, 40, 0, 30), 3.0 * test::sumRgb(a, hd::Aov::Color, 0, 20, 0, 30));
+    EXPECT_GT(test::sumRgb(a, "color", 20, 40, 0, 30), 3.0 * test::sumRgb(a, "color", 0, 20, 0, 30));
     for (const hd::Token& aov : test::allAovs())
         EXPECT_LT(test::maxRelativeDifference(images[0].data.at(aov), images[1].data.at(aov)), 1e-6) << aov;
-    EXPECT_GT(std::get<int>(loaded->renderSetting("opal:stats:lightEvaluations")), 0);
+    EXPECT_GT(std::get<int>(loaded->renderStats().at("lightEvaluations")), 0);
 }
 
 }  // namespace

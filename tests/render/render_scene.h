@@ -4,6 +4,7 @@
 #pragma once
 
 #include "delegate/hd/render_index.h"
+#include "delegate/hd/render_to_convergence.h"
 #include "schema/error.h"
 #include "tests/relight/synthetic_asset.h"
 
@@ -132,12 +133,24 @@ struct Aovs {
     }
 };
 
-inline const std::vector<hd::Token>& allAovs() {
-    static const std::vector<hd::Token> aovs = {hd::Aov::Color,  hd::Aov::Subsurface, hd::Aov::Specular,
-                                                hd::Aov::Irradiance, hd::Aov::Normal, hd::Aov::Depth,
-                                                hd::Aov::PrimId, hd::Aov::Alpha};
+inline std::vector<hd::Token> allAovs() {
+    std::vector<hd::Token> aovs;
+    for (const hd::AovDescriptor& aov : hd::aovTable()) aovs.push_back(aov.name);
     return aovs;
 }
+
+// Anti-aliasing blends a pixel with what its neighbours show only along silhouettes: a pixel
+// whose 3 x 3 neighbourhood's centre rays all hit (interior) or all miss (background) holds
+// one surface or the background alone. Image borders count as neither.
+inline bool neighbourhoodIs(const Aovs& a, int x, int y, bool hit) {
+    if (x < 1 || y < 1 || x + 1 >= a.width || y + 1 >= a.height) return false;
+    for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx)
+            if ((a.at("primId", x + dx, y + dy)[0] >= 0.0f) != hit) return false;
+    return true;
+}
+inline bool interior(const Aovs& a, int x, int y) { return neighbourhoodIs(a, x, y, true); }
+inline bool background(const Aovs& a, int x, int y) { return neighbourhoodIs(a, x, y, false); }
 
 // Renders every AOV through the abstract API (the delegate may come from a plugin).
 inline Aovs renderAovs(hd::RenderDelegate& delegate, hd::RenderIndex& index, const hd::SdfPath& camera, int width,
@@ -153,7 +166,7 @@ inline Aovs renderAovs(hd::RenderDelegate& delegate, hd::RenderIndex& index, con
     state.camera = camera;
     state.width = width;
     state.height = height;
-    pass->execute(state, bindings);
+    hd::renderToConvergence(delegate, *pass, state, bindings);
     Aovs out;
     out.width = width;
     out.height = height;

@@ -1,5 +1,5 @@
 // Sync and commit: prims pull only when dirty, and commitResources redoes only what changed
-// (statistics "opal:stats:..." count the work, the scene counts the pulls).
+// (renderStats() counts the work, the scene counts the pulls).
 #include "delegate/render_delegate.h"
 
 #include "tests/render/render_scene.h"
@@ -10,7 +10,7 @@ namespace opal {
 namespace {
 
 int stat(const hd::RenderDelegate& d, const std::string& name) {
-    return std::get<int>(d.renderSetting("opal:stats:" + name));
+    return std::get<int>(d.renderStats().at(name));
 }
 
 // Two spheres side by side, two lights, a material bound to the first sphere.
@@ -45,8 +45,8 @@ TEST(Sync, FirstCommitEvaluatesEveryLightAtEveryMesh) {
     EXPECT_EQ(s.delegate.meshPaths(), (std::vector<hd::SdfPath>{"/World/A", "/World/B"}));
     // primId is the mesh's place in path order.
     const test::Aovs a = s.render();
-    EXPECT_EQ(a.at(hd::Aov::PrimId, 12, 16)[0], 0.0f);  // A on the left
-    EXPECT_EQ(a.at(hd::Aov::PrimId, 36, 16)[0], 1.0f);
+    EXPECT_EQ(a.at("primId", 12, 16)[0], 0.0f);  // A on the left
+    EXPECT_EQ(a.at("primId", 36, 16)[0], 1.0f);
 }
 
 TEST(Sync, AMaterialEditRecomputesNeitherIrradianceNorProducts) {
@@ -61,14 +61,14 @@ TEST(Sync, AMaterialEditRecomputesNeitherIrradianceNorProducts) {
     EXPECT_EQ(stat(s.delegate, "irradianceProducts"), 2);  // unchanged
     EXPECT_EQ(stat(s.delegate, "materialUpdates"), 3);     // A only: B uses its asset's default
     EXPECT_EQ(stat(s.delegate, "rayScenes"), 1);
-    EXPECT_EQ(std::get<double>(s.delegate.renderSetting("opal:stats:irradianceMs")), 0.0);
-    EXPECT_EQ(std::get<double>(s.delegate.renderSetting("opal:stats:productsMs")), 0.0);
-    EXPECT_GT(std::get<double>(s.delegate.renderSetting("opal:stats:materialMs")), 0.0);
+    EXPECT_EQ(std::get<double>(s.delegate.renderStats().at("irradianceMs")), 0.0);
+    EXPECT_EQ(std::get<double>(s.delegate.renderStats().at("productsMs")), 0.0);
+    EXPECT_GT(std::get<double>(s.delegate.renderStats().at("materialMs")), 0.0);
 
     const test::Aovs after = s.render();
     // A (left) got less light back (more absorption); B (right) did not change.
-    EXPECT_LT(test::sumRgb(after, hd::Aov::Subsurface, 0, 24, 0, 32), 0.99 * test::sumRgb(before, hd::Aov::Subsurface, 0, 24, 0, 32));
-    EXPECT_EQ(test::sumRgb(after, hd::Aov::Subsurface, 24, 48, 0, 32), test::sumRgb(before, hd::Aov::Subsurface, 24, 48, 0, 32));
+    EXPECT_LT(test::sumRgb(after, "subsurface", 0, 24, 0, 32), 0.99 * test::sumRgb(before, "subsurface", 0, 24, 0, 32));
+    EXPECT_EQ(test::sumRgb(after, "subsurface", 24, 48, 0, 32), test::sumRgb(before, "subsurface", 24, 48, 0, 32));
 
     // Rebinding B to the material is a material change of B alone.
     s.scene.meshes["/World/B"].material = "/World/Looks/Jade";
@@ -126,7 +126,7 @@ TEST(Sync, ARemovedLightLeavesTheImageOfTheOthers) {
     test::addLight(fresh.scene, fresh.index, "/World/Key", fresh.scene.lights["/World/Key"]);
     fresh.index.sync();
     const test::Aovs keyOnly = fresh.render();
-    EXPECT_LT(test::maxRelativeDifference(removed.data.at(hd::Aov::Color), keyOnly.data.at(hd::Aov::Color)), 1e-5);
+    EXPECT_LT(test::maxRelativeDifference(removed.data.at("color"), keyOnly.data.at("color")), 1e-5);
 }
 
 TEST(Sync, MovingAMeshRelightsItAndReshadowsTheOthers) {
@@ -160,8 +160,8 @@ TEST(Sync, AnOccluderCastsShadowsOnTheOtherMesh) {
     s.index.changeTracker().markDirty("/World/B", hd::Dirty::Transform);
     s.index.sync();
     const test::Aovs shadowed = s.render();
-    const double before = test::sumRgb(lit, hd::Aov::Irradiance, 0, 24, 0, 32);
-    const double after = test::sumRgb(shadowed, hd::Aov::Irradiance, 0, 24, 0, 32);
+    const double before = test::sumRgb(lit, "irradiance", 0, 24, 0, 32);
+    const double after = test::sumRgb(shadowed, "irradiance", 0, 24, 0, 32);
     EXPECT_LT(after, 0.5 * before);
 }
 
@@ -174,7 +174,7 @@ TEST(Sync, HiddenMeshesAreNeitherRenderedNorRelit) {
     const int evaluations = stat(s.delegate, "lightEvaluations");
     EXPECT_EQ(evaluations, 4 + 2);  // A re-shadowed (B no longer occludes); B skipped
     const test::Aovs hidden = s.render();
-    for (float id : hidden.data.at(hd::Aov::PrimId)) EXPECT_NE(id, 1.0f);
+    for (float id : hidden.data.at("primId")) EXPECT_NE(id, 1.0f);
 
     // A light edit while B is hidden touches A only; showing B relights it in full.
     s.scene.lights["/World/Key"].intensity = 500.0;
@@ -186,7 +186,7 @@ TEST(Sync, HiddenMeshesAreNeitherRenderedNorRelit) {
     s.index.sync();
     EXPECT_EQ(stat(s.delegate, "lightEvaluations"), evaluations + 1 + 2 + 2);  // B in full, A re-shadowed
     const test::Aovs shown = s.render();
-    EXPECT_EQ(shown.at(hd::Aov::PrimId, 36, 16)[0], 1.0f);
+    EXPECT_EQ(shown.at("primId", 36, 16)[0], 1.0f);
 }
 
 TEST(Sync, ANewAssetRebuildsTheMesh) {

@@ -393,6 +393,7 @@ public:
         desc = (scene.*pull_)(id());
         *bits = hd::Dirty::Clean;
     }
+    hd::DirtyBits initialDirtyBits() const override { return hd::Dirty::AllDirty; }
     Desc desc;
 
 private:
@@ -406,6 +407,7 @@ public:
         desc = scene.mesh(id());
         *bits = hd::Dirty::Clean;
     }
+    hd::DirtyBits initialDirtyBits() const override { return hd::Dirty::AllDirty; }
     hd::MeshDesc desc;
 };
 
@@ -431,6 +433,9 @@ public:
     void setRenderSetting(const hd::Token&, const hd::Value&) override {}
     hd::Value renderSetting(const hd::Token&) const override { return {}; }
     std::map<hd::Token, hd::Value> renderSettings() const override { return {}; }
+    std::vector<hd::RenderSettingDescriptor> renderSettingDescriptors() const override { return {}; }
+    std::map<hd::Token, hd::Value> renderStats() const override { return {}; }
+    std::vector<hd::AovDescriptor> aovDescriptors() const override { return {}; }
     std::unique_ptr<hd::RenderPass> createRenderPass(hd::RenderIndex&) override { return nullptr; }
     void commitResources(hd::RenderIndex&) override {}
 };
