@@ -1,5 +1,5 @@
 // One AOV (arbitrary output variable) of a rendered frame and how it is named in a
-// multi-layer EXR. The conventions (delegate/COLOR.md) are Nuke's: the beauty is the
+// multi-layer EXR. The conventions (delegate/output/COLOR.md) are Nuke's: the beauty is the
 // default layer (R, G, B, A without prefix); every other AOV is a layer "<aov>.<channel>".
 #pragma once
 
@@ -29,8 +29,8 @@ struct AovLayer {
     std::string exrChannelName(std::size_t channel) const;
 };
 
-// Opal's AOVs (DESIGN.md §7): color, subsurface, specular, irradiance, normal, depth,
-// primId, alpha.
+// Opal's AOVs (docs/ARCHITECTURE.md#image-formation; delegate/DELEGATE.md gives their values):
+// color, subsurface, specular, irradiance, normal, depth, primId, alpha.
 std::span<const std::string_view> standardAovNames();
 
 // The standard layout of one of Opal's AOVs:
