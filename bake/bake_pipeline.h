@@ -1,4 +1,4 @@
-// The whole bake, stage by stage (the opal-bake issue; DESIGN.md sections 4-6, 8):
+// The whole bake, stage by stage (docs/ARCHITECTURE.md#bake):
 // import -> validate/repair -> subdivide -> sample -> parameterize -> fit basis ->
 // transfer (two-step compression) -> environment visibility -> (write).
 #pragma once

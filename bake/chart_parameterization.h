@@ -1,7 +1,7 @@
-// The wavelet domain's parameterization (DESIGN.md section 4, after Hasan et al. 2006):
-// N = M x 2^n x 2^n surface samples go to M square charts, and within a chart to the cells
-// of a 2^n x 2^n grid, so that samples near each other on the surface are near each other
-// on the grid (which is what lets 2D wavelets compress the transfer).
+// The wavelet domain's parameterization (docs/ARCHITECTURE.md#wavelet-domain, after Hasan et al.
+// 2006): N = M x 2^n x 2^n surface samples go to M square charts, and within a chart to the cells
+// of a 2^n x 2^n grid, so that samples near each other on the surface are near each other on the
+// grid (which is what lets 2D wavelets compress the transfer).
 //
 // Charts: the samples are split by recursive median splits along the longest bounding-box
 // axis; a group of m charts splits into floor(m/2) and ceil(m/2) charts with sample counts

@@ -3,7 +3,7 @@
 // (schema/asset/cube_map.h), Haar transformed per face, the largest terms kept. The m = 0
 // vector chooses the kept positions, shared by all m; P_m are the shifted Legendre
 // polynomials of schema/scatter/fresnel_moments.h, so the delegate applies F_t(eta, .)
-// for any eta (DESIGN.md s.6).
+// for any eta (docs/ARCHITECTURE.md#dome-light).
 #pragma once
 
 #include "bake/progress.h"

@@ -1,5 +1,5 @@
-// Uniform, blue-noise surface samples x_i on the render mesh (DESIGN.md section 4): the
-// points where irradiance is gathered and scattered light is computed.
+// Uniform, blue-noise surface samples x_i on the render mesh (docs/ARCHITECTURE.md#wavelet-domain):
+// the points where irradiance is gathered and scattered light is computed.
 //
 // Method: `candidatesPerSample` x N random candidates, area-weighted and stratified over
 // the triangles (candidate j takes the quantile (j + u_j) / C of the cumulative area), then

@@ -1,6 +1,6 @@
-// Step 6 of the bake (DESIGN.md section 5; the paper's "Precomputing and Compression of
-// Scatter Transmission"): the scattering transfer T_k[o][i] = b_k(|x_o - x_i|) A_i for all
-// basis functions k, computed row by row and compressed in two steps without ever holding
+// Step 6 of the bake (docs/ARCHITECTURE.md#transfer and #compression; the paper's "Precomputing and
+// Compression of Scatter Transmission"): the scattering transfer T_k[o][i] = b_k(|x_o - x_i|) A_i
+// for all basis functions k, computed row by row and compressed in two steps without ever holding
 // the dense N x N matrix:
 //   step 1 (light dimension, w0): each row of T_k, laid out on the chart grid, is Haar
 //          transformed and its `keepFraction` most important coefficients kept, ranked

@@ -1,4 +1,4 @@
-// One row of the scattering transfer for every basis function (DESIGN.md section 5):
+// One row of the scattering transfer for every basis function (docs/ARCHITECTURE.md#transfer):
 // T_k[o][i] = b_k(|x_o - x_i|) A_i. Step 1 of the transfer evaluates N such rows of N, so
 // this is the bake's innermost loop: positions are kept as separate x, y, z arrays (the
 // distance loop vectorizes) and the basis table position is found once per pair for all K.
@@ -13,7 +13,8 @@
 
 namespace opal {
 
-// Sample positions in mm and areas in mm^2: the basis is tabulated in mm (DESIGN.md s.2).
+// Sample positions in mm and areas in mm^2: the basis is tabulated in mm
+// (docs/ARCHITECTURE.md#units).
 struct TransferSamples {
     std::vector<float> x, y, z;  // mm
     std::vector<float> area;     // mm^2

@@ -1,4 +1,4 @@
-// `opal-bench basis`: accuracy of the PCA profile basis (DESIGN.md section 3) against the
+// `opal-bench basis`: accuracy of the PCA profile basis (docs/ARCHITECTURE.md#pca) against the
 // exact dipole, over held-out random materials and the ten Jensen presets, for K = 4..20,
 // plus the paper's Figure 2 (first four basis functions, eigenvalue spectrum).
 #include "bench/output.h"

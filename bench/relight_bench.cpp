@@ -6,13 +6,13 @@
 //   material     the material prim's values alternate between marble and skin1 (Jensen
 //                2001; both eta 1.3), lights fixed: RenderIndex::sync() = the prim's sync +
 //                commitResources, until the new per-sample and per-vertex radiance are in
-//                the committed frame (RelightEngine::setMaterial: DESIGN.md s.5, O(K N))
+//                the committed frame (RelightEngine::setMaterial: #relighting, O(K N))
 //   light        the point light moves to a new position every repeat: sync(), i.e. its E
-//                with Embree shadow rays, the sparse products y_k, the material (s.5, s.6)
+//                with Embree shadow rays, the sparse products y_k, the material (#relighting)
 //   environment  the dome turns about +Y by a new angle every repeat: sync(), i.e. the map
 //                re-projected to the cube map, dotted with the baked vectors, the products
 //   frame        one 1280 x 720 render pass with every AOV bound (opal-render's default),
-//                nothing changed: image formation only (s.7)
+//                nothing changed: image formation only (#image-formation)
 //
 // and, in the same run, the exact reference for the same edit (bench/relight_reference.h),
 // once per case: the O(N^2) dipole gather with the same irradiance recompute, optionally

@@ -1,10 +1,10 @@
-// `opal-bench transfer-row`: the cost of one row of the bake's transfer step 1 (DESIGN.md
-// section 5) at N samples: evaluating T_k[o][i] = b_k(|x_o - x_i|) A_i for all K, the Haar
-// transform of each of the K rows per chart, and keeping each row's largest 1%. Every
-// stage is timed against the straightforward implementation it replaced (kept below as
-// the reference), in the same run, on the same rows, and checked to give the same bits.
-// From the per-row times: the projected step-1 time for N rows on this machine (rows x
-// per-row / cores), and the same measured with all cores on a batch of rows.
+// `opal-bench transfer-row`: the cost of one row of the bake's transfer step 1
+// (docs/ARCHITECTURE.md#compression) at N samples: evaluating T_k[o][i] = b_k(|x_o - x_i|) A_i for
+// all K, the Haar transform of each of the K rows per chart, and keeping each row's largest 1%.
+// Every stage is timed against the straightforward implementation it replaced (kept below as the
+// reference), in the same run, on the same rows, and checked to give the same bits. From the
+// per-row times: the projected step-1 time for N rows on this machine (rows x per-row / cores), and
+// the same measured with all cores on a batch of rows.
 //
 // The scene is synthetic: N points on a sphere (Fibonacci lattice, radius 50 mm, so the
 // default basis is fitted for the 173 mm box diagonal as opal-bake would), ordered into

@@ -1,8 +1,8 @@
-// Dome light textures (DESIGN.md s.6): a lat-long image read with OpenImageIO and converted
-// to the working color space with the delegate's OCIO config (ColorConfig::toWorking of the
-// light's textureColorSpace), cached by (file, color space) so that editing a dome's
-// intensity or rotation never re-reads its file. A dome without a file is a constant white
-// map, which the light's color and intensity scale (UsdLux).
+// Dome light textures (docs/ARCHITECTURE.md#dome-light): a lat-long image read with OpenImageIO and
+// converted to the working color space with the delegate's OCIO config (ColorConfig::toWorking of
+// the light's textureColorSpace), cached by (file, color space) so that editing a dome's intensity
+// or rotation never re-reads its file. A dome without a file is a constant white map, which the
+// light's color and intensity scale (UsdLux).
 #pragma once
 
 #include "delegate/output/color_config.h"

@@ -1,7 +1,8 @@
 // The light Sprims (UsdLux SphereLight with its spot shaping, DistantLight, DomeLight): each
 // pulls its hd::LightDesc and turns it into what irradiance and the specular layer use, an
 // AnalyticLight or an EnvironmentLight over the (cached) dome texture. The delegate's
-// commitResources recomputes E only for the lights whose version changed (DESIGN.md s.6).
+// commitResources recomputes E only for the lights whose version changed
+// (docs/ARCHITECTURE.md#irradiance).
 #pragma once
 
 #include "delegate/relight/analytic_light.h"

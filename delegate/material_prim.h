@@ -1,7 +1,7 @@
 // The material Sprim (Opal's material override): subsurface coefficients and the specular
 // layer. Materials sync before meshes; commitResources hands every mesh bound to a material
 // whose version changed the new values, which the relighting engine applies in O(K N)
-// without new sparse products (DESIGN.md s.5).
+// without new sparse products (docs/ARCHITECTURE.md#relighting).
 #pragma once
 
 #include "delegate/hd/prim.h"

@@ -1,6 +1,6 @@
-// A dome light as the pixel loop looks it up (DESIGN.md s.7): the radiance toward world
-// directions, for the background behind the meshes and the specular layer's reflection,
-// a block of pixels at a time.
+// A dome light as the pixel loop looks it up (docs/ARCHITECTURE.md#image-formation): the radiance
+// toward world directions, for the background behind the meshes and the specular layer's
+// reflection, a block of pixels at a time.
 //
 //   radiance(d) = scale * LatLongMap::sampleLevel(level, latLongCoordinates(d * domeFromWorld))
 //

@@ -1,10 +1,10 @@
-// F_t(eta, mu) for one eta, tabulated for the pixel loop: the renderer weighs every hit
-// pixel's subsurface radiance by the exact Fresnel transmittance toward the viewer
-// (DESIGN.md s.7), and the exact formula (schema/scatter/dipole.h: a square root and two
-// divisions in double) was 5% of the 720p frame's CPU time. 2048 intervals in sqrt(mu)
-// (dense at grazing, where F_t falls fastest when eta is near 1) with linear interpolation
-// stay within 1e-5 of it for eta >= 1 (tests); for eta < 1, whose F_t has a kink at the
-// critical angle, the table holds nothing and lookups are exact.
+// F_t(eta, mu) for one eta, tabulated for the pixel loop: the renderer weighs every hit pixel's
+// subsurface radiance by the exact Fresnel transmittance toward the viewer
+// (docs/ARCHITECTURE.md#subsurface), and the exact formula (schema/scatter/dipole.h: a square root
+// and two divisions in double) was 5% of the 720p frame's CPU time. 2048 intervals in sqrt(mu)
+// (dense at grazing, where F_t falls fastest when eta is near 1) with linear interpolation stay
+// within 1e-5 of it for eta >= 1 (tests); for eta < 1, whose F_t has a kink at the critical angle,
+// the table holds nothing and lookups are exact.
 #pragma once
 
 #include <array>

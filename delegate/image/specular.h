@@ -1,7 +1,7 @@
-// The specular layer over the subsurface term (DESIGN.md s.7): a dielectric GGX microfacet
-// lobe (Walter et al. 2007) with Smith height-correlated masking (Heitz 2014), weighted by
-// the exact Fresnel reflectance F_r(eta, .) = 1 - F_t(eta, .), so that what the surface
-// reflects is exactly what the subsurface term does not let in.
+// The specular layer over the subsurface term (docs/ARCHITECTURE.md#specular): a dielectric GGX
+// microfacet lobe (Walter et al. 2007) with Smith height-correlated masking (Heitz 2014), weighted
+// by the exact Fresnel reflectance F_r(eta, .) = 1 - F_t(eta, .), so that what the surface reflects
+// is exactly what the subsurface term does not let in.
 //
 // Roughness r in [0, 1] is the artist's (UsdPreviewSurface) parameter: alpha = r^2.
 //

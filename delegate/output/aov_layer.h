@@ -1,5 +1,5 @@
 // One AOV (arbitrary output variable) of a rendered frame and how it is named in a
-// multi-layer EXR. The conventions (delegate/COLOR.md) are Nuke's: the beauty is the
+// multi-layer EXR. The conventions (delegate/output/COLOR.md) are Nuke's: the beauty is the
 // default layer (R, G, B, A without prefix); every other AOV is a layer "<aov>.<channel>".
 #pragma once
 

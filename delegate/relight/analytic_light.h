@@ -1,6 +1,7 @@
-// UsdLux sphere (point, spot) and distant lights reduced to what irradiance needs (DESIGN.md
-// s.6): at a world point, the direction toward the light and the irradiance E_perp it gives
-// a surface facing it. The sample's cosine, F_t and visibility are applied by the callers.
+// UsdLux sphere (point, spot) and distant lights reduced to what irradiance needs
+// (docs/ARCHITECTURE.md#sphere-light, #distant-light): at a world point, the direction toward the
+// light and the irradiance E_perp it gives a surface facing it. The sample's cosine, F_t and
+// visibility are applied by the callers.
 //
 // Units (UsdLux): emitted radiance L_e = color * intensity * 2^exposure, RGB in the working
 // space; lengths in scene units.

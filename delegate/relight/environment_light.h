@@ -1,9 +1,9 @@
-// The dome light (DESIGN.md s.6, after Ng et al. 2003): a lat-long radiance map, rotated by
-// the light's transform, resampled to the cube map of the asset's environment transfer (in
-// the asset's object space), Haar transformed per face, and dotted with every sample's
-// baked transport vectors: E_m(x_i) = <T_{i,m}, L> (environment_vectors.h). Rotating the
-// dome or the mesh only re-projects the map. The baked visibility is the asset's own (self)
-// occlusion: other meshes do not shadow a dome.
+// The dome light (docs/ARCHITECTURE.md#dome-light, after Ng et al. 2003): a lat-long radiance map,
+// rotated by the light's transform, resampled to the cube map of the asset's environment transfer
+// (in the asset's object space), Haar transformed per face, and dotted with every sample's baked
+// transport vectors: E_m(x_i) = <T_{i,m}, L> (environment_vectors.h). Rotating the dome or the mesh
+// only re-projects the map. The baked visibility is the asset's own (self) occlusion: other meshes
+// do not shadow a dome.
 //
 // Orientation (UsdLux DomeLight, which follows OpenEXR's latitude-longitude maps; Poly
 // Haven's .hdr maps are authored for it): +Y is up; the image's horizontal coordinate

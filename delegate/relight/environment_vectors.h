@@ -1,5 +1,5 @@
-// The asset's baked environment transport vectors T_{i,m} (DESIGN.md s.6), laid out for the
-// one operation a dome edit waits for: E_m(x_i) += <T_{i,m}, L> for every sample i and
+// The asset's baked environment transport vectors T_{i,m} (docs/ARCHITECTURE.md#dome-light), laid
+// out for the one operation a dome edit waits for: E_m(x_i) += <T_{i,m}, L> for every sample i and
 // moment m, RGB.
 //
 // The sidecar stores one sparse row per (sample, m); the bake keeps the same Haar

@@ -1,4 +1,5 @@
-// How an analytic light enters the Fresnel-moment irradiance (irradiance.h, DESIGN.md s.6).
+// How an analytic light enters the Fresnel-moment irradiance (irradiance.h,
+// docs/ARCHITECTURE.md#fresnel-moments).
 //
 // The engine weights the moments with c_m(eta) = fresnelMoments(eta, terms), the
 // cosine-weighted shifted-Legendre fit of F_t(eta, .), so that baked environment vectors

@@ -1,5 +1,5 @@
-// The irradiance at an asset's samples in Fresnel-moment form (DESIGN.md s.6), and the
-// samples placed in the world.
+// The irradiance at an asset's samples in Fresnel-moment form (docs/ARCHITECTURE.md#irradiance),
+// and the samples placed in the world.
 //
 // E(x_i) = integral L_i(w) F_t(eta, w) max(0, n.w) dw needs eta, a material parameter.
 // So that an eta edit stays a material edit (no new sparse products), lights deliver

@@ -1,7 +1,7 @@
-// The irradiance moments of one placed translucent mesh, kept per light so that an edit
-// recomputes only what changed (DESIGN.md s.6): moving or editing a light recomputes that
-// light's E_m alone and re-sums; moving the mesh recomputes every light (they all depend
-// on where the samples are); moving an occluder re-shadows the analytic lights only.
+// The irradiance moments of one placed translucent mesh, kept per light so that an edit recomputes
+// only what changed (docs/ARCHITECTURE.md#irradiance): moving or editing a light recomputes that
+// light's E_m alone and re-sums; moving the mesh recomputes every light (they all depend on where
+// the samples are); moving an occluder re-shadows the analytic lights only.
 //
 // The moment count is the asset's environment transfer's fresnelTerms (the baked dome
 // vectors fix it), or 2 when the asset has no environment transfer.

@@ -14,7 +14,7 @@ namespace opal {
 
 namespace {
 
-// R_d(r) of one channel with the r-independent terms computed once (DESIGN.md s.2):
+// R_d(r) of one channel with the r-independent terms computed once (docs/ARCHITECTURE.md#dipole):
 // R_d(r) = alpha'/(4 pi) [z_r (sigma_tr + 1/d_r) e^{-sigma_tr d_r}/d_r^2
 //                       + z_v (sigma_tr + 1/d_v) e^{-sigma_tr d_v}/d_v^2].
 class Dipole {
@@ -65,7 +65,8 @@ std::vector<float> referenceGather(const TranslucentAsset& asset, const Material
                 const double area = s.area * toMm * toMm;                                   // mm^2
                 for (int c = 0; c < 3; ++c) sum[c] += profile[c](r2) * area * irradiance[3 * i + c];
             }
-            // The sample's own light, gathered over its own disk (DESIGN.md s.5, as the bake).
+            // The sample's own light, gathered over its own disk, as the bake does
+            // (docs/ARCHITECTURE.md#total-reflectance).
             const double radius = std::sqrt(asset.samples[o].area / std::numbers::pi) * toMm;
             for (int c = 0; c < 3; ++c)
                 sum[c] += dipoleDiskReflectance(radius, material.channel(c)) * irradiance[3 * o + c];

@@ -1,6 +1,6 @@
-// The exact dipole gather over an asset's samples (DESIGN.md s.2), with neither the PCA
-// profile basis nor the wavelet compression: the ground truth the relighting engine is
-// measured against, and a reference mode users can select.
+// The exact dipole gather over an asset's samples (docs/ARCHITECTURE.md#bssrdf), with neither the
+// PCA profile basis nor the wavelet compression: the ground truth the relighting engine is measured
+// against, and a reference mode users can select.
 //
 //   L(x_o) = (1/pi) sum_i R_d(|x_o - x_i|; sigma_s'_c, sigma_a_c, eta) A_i E_c(x_i)
 //

@@ -1,5 +1,5 @@
-// Relighting one translucent asset: the paper's rendering algorithm, steps 1-5 (DESIGN.md
-// s.5), with the Fresnel moments of s.6.
+// Relighting one translucent asset: the paper's rendering algorithm, steps 1-5
+// (docs/ARCHITECTURE.md#relighting), with Fresnel moments (#fresnel-moments).
 //
 //   setIrradiance:  wE_m = w0 E_m                     Haar per chart, every m and RGB
 //                   y_{k,m} = (w1 T_k w0^-1) wE_m      one pass over each sparse matrix

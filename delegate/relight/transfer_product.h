@@ -1,5 +1,6 @@
-// The relighting engine's working copy of the compressed transfer (DESIGN.md s.5), laid
-// out for the one operation a light edit waits for: y_k = (w1 T_k w0^-1) wE for every k.
+// The relighting engine's working copy of the compressed transfer
+// (docs/ARCHITECTURE.md#relighting), laid out for the one operation a light edit waits for:
+// y_k = (w1 T_k w0^-1) wE for every k.
 //
 // That product streams every entry of the K sparse matrices once per light edit (58
 // million entries on the 65,536-sample bunny) and gathers wE at each entry's column. With

@@ -1,4 +1,4 @@
-// The USDA half of a baked asset (DESIGN.md section 8): a root Mesh prim with the render
+// The USDA half of a baked asset (docs/ARCHITECTURE.md#asset): a root Mesh prim with the render
 // mesh and the applied OpalSubsurfaceAPI (schema/usd/opal.usda): default material, units,
 // editable range, the PCA profile basis, and the asset path of the sidecar; bake settings
 // in the prim's customData. readAsset() reads both halves and checks they belong together.

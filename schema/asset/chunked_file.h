@@ -1,5 +1,5 @@
-// Opal's versioned chunked binary container (DESIGN.md section 8; byte layout in
-// SIDECAR.md): a 64-byte header (magic, kind, version, sizes, checksums), the chunks'
+// Opal's versioned chunked binary container (docs/ARCHITECTURE.md#asset; byte layout in
+// schema/asset/SIDECAR.md): a 64-byte header (magic, kind, version, sizes, checksums), the chunks'
 // stored bytes back to back, then the chunk table. Every byte of a file is covered by a
 // checksum. Writers replace files atomically; readers validate everything before they
 // trust or allocate anything, and every error names the file (and the chunk).

@@ -1,10 +1,9 @@
-// The sidecar `name.opal` of a baked asset (DESIGN.md section 8; byte layout in
-// SIDECAR.md): the parts of a TranslucentAsset too big for the USDA layer — chart layout,
-// surface samples, vertex interpolation weights, compressed transfer, environment
-// transfer — in an Opal container of kind 'SCAT'. The render mesh, profile basis, default
-// material, editable range and bake settings live in the USDA layer; the sidecar's header
-// chunk records what it expects of them (SidecarHeader) so the two files can be checked to
-// belong together.
+// The sidecar `name.opal` of a baked asset (docs/ARCHITECTURE.md#asset; byte layout in
+// schema/asset/SIDECAR.md): the parts of a TranslucentAsset too big for the USDA layer — chart
+// layout, surface samples, vertex interpolation weights, compressed transfer, environment transfer
+// — in an Opal container of kind 'SCAT'. The render mesh, profile basis, default material, editable
+// range and bake settings live in the USDA layer; the sidecar's header chunk records what it
+// expects of them (SidecarHeader) so the two files can be checked to belong together.
 #pragma once
 
 #include "schema/asset/chunk_format.h"

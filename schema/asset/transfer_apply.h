@@ -1,5 +1,5 @@
-// What the compressed transfer means, as code: the run-time product of DESIGN.md s.5
-// (the paper's equation (5)):
+// What the compressed transfer means, as code: the run-time product of
+// docs/ARCHITECTURE.md#compression (the paper's equation (10)):
 //   wE  = w0 E                 Haar, per chart, of the irradiance at the samples
 //   y_k = (w1 T_k w0^-1) wE    one sparse product per basis function
 //   L   = w1^-1 (sum_k s_k y_k) CDF 9/7 inverse, per chart

@@ -42,10 +42,10 @@ struct VertexWeights {
     std::vector<float> weights;
 };
 
-// The two-step compressed transfer (DESIGN.md section 5): one matrix per basis function
-// k, ^{w1}T_k^{w0^-1}. Rows are CDF 9/7 coefficients of the output (spatial) dimension,
-// columns Haar coefficients of the light dimension, both in the chart layout: every
-// matrix is samples x samples, with strictly ascending columns within each row.
+// The two-step compressed transfer (docs/ARCHITECTURE.md#compression): one matrix per basis
+// function k, ^{w1}T_k^{w0^-1}. Rows are CDF 9/7 coefficients of the output (spatial) dimension,
+// columns Haar coefficients of the light dimension, both in the chart layout: every matrix is
+// samples x samples, with strictly ascending columns within each row.
 struct CompressedTransfer {
     std::vector<SparseMatrix> perBasis;  // K
     // Per matrix, the step of the grid its values are stored on (transfer_value_grid.h);

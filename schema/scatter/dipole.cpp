@@ -26,8 +26,9 @@ double poleDiskIntegral(double rho, double z, double sigmaTr) {
     return std::max(0.0, std::exp(-sigmaTr * z) - far);  // >= 0; rounding near radius 0
 }
 
-// The dipole's sources for one channel (DESIGN.md section 2, with the corrected sigma_t'
-// and z_v): real source at depth z_r = 1/sigma_t', virtual one at z_v = z_r (1 + 4A/3).
+// The dipole's sources for one channel (docs/ARCHITECTURE.md#coefficients and #poles, with
+// the corrected sigma_t' and sigma_tr): real source at depth z_r = 1/sigma_t', virtual one at
+// z_v = z_r (1 + 4A/3).
 struct Poles {
     double alphaPrime, sigmaTr, zr, zv;
 };
@@ -50,18 +51,18 @@ void requireDipoleEta(double eta, std::string_view context) {
     throw Error(out.str());
 }
 
-// A = (1 + F_dr) / (1 - F_dr): the boundary mismatch term (DESIGN.md section 2).
+// A = (1 + F_dr) / (1 - F_dr): the boundary mismatch term (docs/ARCHITECTURE.md#boundary).
 double boundaryMismatch(double eta) {
     const double fdr = fresnelDiffuseReflectance(eta);
     return (1.0 + fdr) / (1.0 - fdr);
 }
 
-// DESIGN.md section 2: F_dr(eta), Egan and Hilgeman's polynomial fit.
+// F_dr(eta), Egan and Hilgeman's polynomial fit (docs/ARCHITECTURE.md#boundary).
 double fresnelDiffuseReflectance(double eta) {
     return -1.440 / (eta * eta) + 0.710 / eta + 0.668 + 0.0636 * eta;
 }
 
-// DESIGN.md section 2 (Jensen et al. 2001, eq. 5 with the corrected sigma_t' and z_v):
+// The paper's equation (4) as Jensen et al. 2001 give it (docs/ARCHITECTURE.md#dipole):
 // R_d(r) = alpha'/(4 pi) [z_r (sigma_tr + 1/d_r) e^{-sigma_tr d_r}/d_r^2
 //                       + z_v (sigma_tr + 1/d_v) e^{-sigma_tr d_v}/d_v^2].
 double dipoleProfile(double r, const DipoleCoefficients& c) {
@@ -75,7 +76,7 @@ double dipoleDiskReflectance(double radius, const DipoleCoefficients& c) {
     return 0.5 * p.alphaPrime * (poleDiskIntegral(radius, p.zr, p.sigmaTr) + poleDiskIntegral(radius, p.zv, p.sigmaTr));
 }
 
-// DESIGN.md section 2 "Check": integral_0^inf R_d(r) 2 pi r dr
+// docs/ARCHITECTURE.md#total-reflectance: integral_0^inf R_d(r) 2 pi r dr
 //   = (alpha'/2) (1 + e^{-(4/3) A sqrt(3(1-alpha'))}) e^{-sqrt(3(1-alpha'))}.
 double dipoleTotalReflectance(double alphaPrime, double eta) {
     const double s = std::sqrt(3.0 * (1.0 - alphaPrime));

@@ -1,6 +1,6 @@
 // The Jensen et al. 2001 dipole diffusion profile and the Fresnel terms it needs.
-// All lengths in millimetres, coefficients in mm^-1 (DESIGN.md section 2; the seed
-// paper's equation (4) has typos, these are the corrected formulas).
+// All lengths in millimetres, coefficients in mm^-1 (docs/ARCHITECTURE.md#dipole; the seed
+// paper's equation (4) has typos, these are Jensen et al. 2001's formulas).
 #pragma once
 
 #include <string_view>
@@ -51,8 +51,8 @@ double dipoleTotalReflectance(double alphaPrime, double eta);
 // of each pole, so each pole integrates to e^{-sigma_tr z} - z e^{-sigma_tr d}/d with
 // d = sqrt(radius^2 + z^2)):
 //   (alpha'/2) sum_{z in {z_r, z_v}} [e^{-sigma_tr z} - z e^{-sigma_tr d(z)} / d(z)].
-// The transfer's self term (DESIGN.md section 5): a sample gathers its own light over its
-// own area A, a disk of radius sqrt(A / pi), not at the profile's peak R_d(0) times A.
+// The transfer's self term (docs/ARCHITECTURE.md#total-reflectance): a sample gathers its own light
+// over its own area A, a disk of radius sqrt(A / pi), not at the profile's peak R_d(0) times A.
 // radius = infinity gives dipoleTotalReflectance. Same preconditions as dipoleProfile.
 double dipoleDiskReflectance(double radius, const DipoleCoefficients& c);
 

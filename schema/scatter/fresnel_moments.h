@@ -1,7 +1,8 @@
 // F_t(eta, mu) expanded in shifted Legendre polynomials of mu = cos(theta) on [0, 1]:
 //   F_t(eta, mu) ~= sum_m c_m(eta) P_m(mu),  P_0 = 1, P_1 = 2mu - 1, P_2 = 6mu^2 - 6mu + 1.
 // The bake stores environment transport vectors V mu P_m(mu) dOmega for each m; at run time
-// E = sum_m c_m(eta) <T_m, L>, so an edit of eta needs no new visibility (DESIGN.md s.6).
+// E = sum_m c_m(eta) <T_m, L>, so an edit of eta needs no new visibility
+// (docs/ARCHITECTURE.md#fresnel-moments).
 #pragma once
 
 #include <vector>

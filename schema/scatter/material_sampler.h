@@ -1,5 +1,5 @@
 // Deterministic random single-channel materials inside an editable range: the training
-// set of the PCA profile basis (DESIGN.md section 3) and held-out sets that measure it.
+// set of the PCA profile basis (docs/ARCHITECTURE.md#pca) and held-out sets that measure it.
 #pragma once
 
 #include "schema/scatter/dipole.h"

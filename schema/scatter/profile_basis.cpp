@@ -147,9 +147,9 @@ ProfileBasis::ProfileBasis(std::vector<double> radii, std::vector<double> weight
     range_.validate("ProfileBasis range");
 }
 
-// DESIGN.md section 3: M[j][l] = sqrt(w_l) R_d(r_l, sigma_j) / ||R_d(., sigma_j)||_w = U S V^T,
-// b_k = V_k / sqrt(w). Since V_k = M^T U_k / S_k, b_k(r_l) = sum_j U_jk P_jl / S_k with P the
-// normalized profiles: the same numbers, and also defined at r = 0 where w = 0.
+// docs/ARCHITECTURE.md#pca: M[j][l] = sqrt(w_l) R_d(r_l, sigma_j) / ||R_d(., sigma_j)||_w
+// = U S V^T, b_k = V_k / sqrt(w). Since V_k = M^T U_k / S_k, b_k(r_l) = sum_j U_jk P_jl / S_k
+// with P the normalized profiles: the same numbers, and also defined at r = 0 where w = 0.
 ProfileBasis ProfileBasis::fit(const ProfileBasisSettings& settings) {
     const FitPlan plan = planFit(settings);
     RadialGrid grid = makeRadialGrid(plan.rMax, plan.r0, plan.radialSamples);
@@ -212,7 +212,7 @@ void ProfileBasis::diskIntegrals(double radius, std::span<double> out) const {
     }
 }
 
-// DESIGN.md section 3: s_k(sigma) = sum_l w_l R_d(r_l, sigma) b_k(r_l).
+// docs/ARCHITECTURE.md#pca: s_k(sigma) = sum_l w_l R_d(r_l, sigma) b_k(r_l).
 std::vector<double> ProfileBasis::coefficients(const DipoleCoefficients& c) const {
     requireValidChannel(c);
     const std::size_t L = radii_.size();

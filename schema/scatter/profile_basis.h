@@ -1,5 +1,5 @@
-// The PCA profile basis of DESIGN.md section 3 (the paper's section "Diffuse Scattering
-// Material Function Decomposition"): R_d(r, sigma) ~= sum_k s_k(sigma) b_k(r).
+// The PCA profile basis (docs/ARCHITECTURE.md#pca; the paper's section "Diffuse Scattering
+// Material Function Decomposition" and its equation (5)): R_d(r, sigma) ~= sum_k s_k(sigma) b_k(r).
 #pragma once
 
 #include "schema/scatter/material.h"
@@ -52,8 +52,8 @@ public:
     double evaluate(int k, double r) const;
     // out[k] = integral_0^radius b_k(r) 2 pi r dr for every k (out: K values), exact for the
     // piecewise-linear b_k of evaluate(); the disk is cut at rMax. The transfer's self term
-    // (DESIGN.md section 5): sum_k s_k out[k] ~= dipoleDiskReflectance(radius). Throws
-    // opal::Error for a negative or NaN radius.
+    // (docs/ARCHITECTURE.md#total-reflectance): sum_k s_k out[k] ~= dipoleDiskReflectance(radius).
+    // Throws opal::Error for a negative or NaN radius.
     void diskIntegrals(double radius, std::span<double> out) const;
     // s_k(sigma) = sum_l w_l R_d(r_l, sigma) b_k(r_l): K numbers per channel. Throws
     // opal::Error for non-positive or non-finite coefficients or eta outside [1, 3].

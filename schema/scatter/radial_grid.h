@@ -1,5 +1,5 @@
 // The radial samples r_l and quadrature weights w_l = 2 pi r_l dr_l of the PCA profile
-// basis (DESIGN.md section 3).
+// basis (docs/ARCHITECTURE.md#pca).
 #pragma once
 
 #include <vector>

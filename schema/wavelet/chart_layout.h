@@ -1,6 +1,7 @@
 // The wavelet domain of an asset: M charts, each a 2^n x 2^n grid of surface samples
-// (DESIGN.md section 4). Sample i lives in chart i / (size*size), at row (i % (size*size))
-// / size and column i % size: samples are stored in grid order, so the layout is implicit.
+// (docs/ARCHITECTURE.md#wavelet-domain). Sample i lives in chart i / (size*size), at row
+// (i % (size*size)) / size and column i % size: samples are stored in grid order, so the
+// layout is implicit.
 #pragma once
 
 #include <cstddef>

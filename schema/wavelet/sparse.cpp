@@ -1,4 +1,4 @@
-// Coefficient selection for the two compression steps (DESIGN.md section 5): step 1
+// Coefficient selection for the two compression steps (docs/ARCHITECTURE.md#compression): step 1
 // keeps the largest Haar coefficients of each transfer row, step 2 keeps the 9/7
 // coefficients carrying a given fraction of the energy.
 #include "schema/wavelet/sparse.h"

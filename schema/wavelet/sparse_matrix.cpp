@@ -1,5 +1,5 @@
 // Compressed-sparse-row helpers: building, validating (for the sidecar reader) and the
-// runtime product y_k = T_k wE with RGB interleaved (DESIGN.md section 5).
+// runtime product y_k = T_k wE with RGB interleaved (docs/ARCHITECTURE.md#relighting).
 #include "schema/wavelet/sparse.h"
 
 #include "schema/error.h"

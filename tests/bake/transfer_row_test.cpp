@@ -1,5 +1,5 @@
 // transferRow against two independent evaluations of T_k[o][i] = b_k(|x_o - x_i|) A_i
-// (DESIGN.md section 5): a double-precision one on a basis whose functions are linear in
+// (docs/ARCHITECTURE.md#transfer): a double-precision one on a basis whose functions are linear in
 // r (so the lookup table's interpolation is exact up to float rounding), and the per-pair
 // float loop the bake used before (Imath length, BasisLookup::evaluate, times A_i), which
 // it must reproduce bit for bit.

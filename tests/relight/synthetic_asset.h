@@ -88,8 +88,8 @@ inline ProfileBasis fitBasis(const EditableRange& range, int K, double rMax) {
     return ProfileBasis::fit(settings);
 }
 
-// The dense T_k[o][i] = b_k(|x_o - x_i|) A_i (mm, mm^2) of DESIGN.md s.5, one k; the
-// diagonal integrates b_k over the sample's own disk of area A_o, as the bake does.
+// The dense T_k[o][i] = b_k(|x_o - x_i|) A_i (mm, mm^2) of docs/ARCHITECTURE.md#transfer, one k;
+// the diagonal integrates b_k over the sample's own disk of area A_o, as the bake does.
 inline std::vector<double> denseTransfer(const TranslucentAsset& asset, int k) {
     const std::size_t n = asset.samples.size();
     const double toMm = 1.0 / asset.unitsPerMm;

@@ -1,4 +1,4 @@
-// The PCA profile basis (DESIGN.md section 3): accuracy over held-out materials against
+// The PCA profile basis (docs/ARCHITECTURE.md#pca): accuracy over held-out materials against
 // the exact dipole, the eigenproblem it solves, the stored form and the fast lookup.
 #include "schema/error.h"
 #include "schema/scatter/dipole.h"

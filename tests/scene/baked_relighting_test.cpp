@@ -6,8 +6,8 @@
 //
 // Both sides get the same irradiance: E(x_i; eta) = sum_m c_m(eta) E_m(x_i), the one the
 // engine formed from MeshIrradiance's moments (RelightEngine::sampleIrradiance). What is
-// left is the engine's own approximation: the K = 12 PCA profile basis (DESIGN.md s.3)
-// and the two-step wavelet compression of the transfer (s.5). The lossless transfer
+// left is the engine's own approximation: the K = 12 PCA profile basis (docs/ARCHITECTURE.md#pca)
+// and the two-step wavelet compression of the transfer (#compression). The lossless transfer
 // (keep 1, energy 1), summed directly here, separates the two: lossless vs reference is
 // the basis alone, compressed vs lossless the compression alone. That the engine on a
 // lossless bake gives exactly that sum is checked on smaller bakes (a lossless bake of
@@ -141,9 +141,9 @@ MeshIrradiance irradianceOf(const std::shared_ptr<const TranslucentAsset>& asset
 // ---- truths -------------------------------------------------------------------------
 
 // The lossless transfer's radiance summed directly, L(x_o) = (1/pi) sum_k s_k (T_k E)(x_o)
-// (DESIGN.md s.5), with T_k[o][i] = b_k(|x_o - x_i|) A_i off the diagonal (BasisLookup, the
-// table the bake evaluates) and T_k[o][o] = the integral of b_k over the sample's own disk
-// (transferSelfTerms). A bake with keep = energy = 1 stores exactly this matrix.
+// (docs/ARCHITECTURE.md#transfer), with T_k[o][i] = b_k(|x_o - x_i|) A_i off the diagonal
+// (BasisLookup, the table the bake evaluates) and T_k[o][o] = the integral of b_k over the sample's
+// own disk (transferSelfTerms). A bake with keep = energy = 1 stores exactly this matrix.
 std::vector<float> basisGather(const TranslucentAsset& asset, const Material& material, std::span<const float> e) {
     const std::size_t n = asset.samples.size(), K = std::size_t(asset.basis.K());
     const std::array<std::vector<double>, 3> s = asset.basis.project(material);

@@ -1,5 +1,5 @@
 // The two wavelet compression rules on signals like the transfer: smooth bumps on a
-// chart (DESIGN.md section 5). Energies are measured in the signal domain.
+// chart (docs/ARCHITECTURE.md#compression). Energies are measured in the signal domain.
 #include "schema/wavelet/cdf97.h"
 #include "schema/wavelet/haar.h"
 #include "schema/wavelet/sparse.h"
