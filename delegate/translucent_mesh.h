@@ -1,7 +1,8 @@
 // The translucent mesh Rprim (a Mesh with OpalSubsurfaceAPI; hdEmbree's mesh): it pulls its
 // MeshDesc for the dirty bits it is given and owns what relights it, a MeshIrradiance (E_m
 // per light at the samples) and a RelightEngine (products, material, radiance). The
-// delegate's commitResources drives it, redoing only what changed (DESIGN.md s.5, s.6):
+// delegate's commitResources drives it, redoing only what changed
+// (docs/ARCHITECTURE.md#relighting and #irradiance):
 //
 //   Topology (a new asset)  new engine and irradiance; every light evaluated
 //   Transform               MeshIrradiance::setTransform (every light: samples moved)

@@ -1,11 +1,12 @@
-// Image formation (DESIGN.md s.7; hdEmbree's renderer): Embree primary rays against the
-// committed render meshes, tiled over TBB. Per hit:
+// Image formation (docs/ARCHITECTURE.md#image-formation; hdEmbree's renderer): Embree
+// primary rays against the committed render meshes, tiled over TBB. Per sample that hits:
 //   subsurface = F_t(eta, n.w_o) sum_j b_j L(v_j)      barycentric over the hit triangle's
 //                                                      per-vertex radiance L (no F_t(w_o))
 //   specular   = GGX of every analytic light (shadow rays) + the dome reflection (specular.h)
 //   color      = subsurface + specular, alpha 1
 // and where nothing is hit, the visible domes (or nothing: opal:transparentBackground).
-// The renderer reads only a committed Frame: prims may change while it runs.
+// Pixels converge over passes of sub-pixel samples (renderPass below). The renderer reads
+// only a committed Frame: prims may change while it runs.
 #pragma once
 
 #include "delegate/relight/analytic_light.h"

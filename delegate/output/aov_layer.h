@@ -1,6 +1,7 @@
 // One AOV (arbitrary output variable) of a rendered frame and how it is named in a
 // multi-layer EXR. The conventions (delegate/output/COLOR.md) are Nuke's: the beauty is the
 // default layer (R, G, B, A without prefix); every other AOV is a layer "<aov>.<channel>".
+// Names, channels and formats come from hd/aov.h's table.
 #pragma once
 
 #include "delegate/hd/aov.h"
