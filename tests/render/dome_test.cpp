@@ -50,8 +50,6 @@ hd::LightDesc uniformDome(Rgb color) {
     return dome;
 }
 
-bool isHit(const test::Aovs& a, int x, int y) { return a.at("primId", x, y)[0] >= 0.0f; }
-
 TEST(Dome, AUniformDomeIsTheBackgroundAndLightsTheSphereEvenly) {
     const Rgb sky(0.5, 0.7, 1.0);
     DomeScene s(uniformDome(sky));
@@ -69,8 +67,9 @@ TEST(Dome, AUniformDomeIsTheBackgroundAndLightsTheSphereEvenly) {
         for (int x = 0; x < W; ++x) {
             EXPECT_EQ(a.at("alpha", x, y)[0], 1.0f);  // the dome covers what the sphere does not
             EXPECT_EQ(a.at("color", x, y)[3], 1.0f);
-            if (test::background(a, x, y))
+            if (test::background(a, x, y)) {
                 for (int c = 0; c < 3; ++c) EXPECT_EQ(a.at("color", x, y)[c], float(sky[c]));
+            }
             if (!test::interior(a, x, y)) continue;
             ++hits;
             for (int c = 0; c < 3; ++c)
@@ -109,7 +108,9 @@ TEST(Dome, TheBackgroundCanBeTransparentOrHidden) {
     for (int y = 0; y < H; ++y)
         for (int x = 0; x < W; ++x)
             for (const test::Aovs* a : {&t, &i}) {
-                if (test::interior(*a, x, y)) EXPECT_EQ(a->at("alpha", x, y)[0], 1.0f);
+                if (test::interior(*a, x, y)) {
+                    EXPECT_EQ(a->at("alpha", x, y)[0], 1.0f);
+                }
                 if (!test::background(*a, x, y)) continue;
                 EXPECT_EQ(a->at("alpha", x, y)[0], 0.0f);
                 for (int c = 0; c < 4; ++c) EXPECT_EQ(a->at("color", x, y)[c], 0.0f);

@@ -17,45 +17,69 @@
 
 namespace opal::test {
 
-// The cube-sphere of synthetic_asset.h (6 x 2^log2Size^2 samples, radius in mm), with
-// per-vertex weights onto the 4 nearest samples (inverse distance), a basis fitted over a
-// narrow range around `material` with every pair of samples inside rMax, the lossless
-// transfer, and (with envFaceSize > 0) environment vectors with 3 Fresnel terms.
-inline std::shared_ptr<TranslucentAsset> sphereAsset(std::uint32_t log2Size = 3, float radius = 5.0f,
-                                                     std::uint32_t envFaceSize = 4,
-                                                     Material material = {{1.2, 0.9, 0.7}, {0.05, 0.1, 0.2}, 1.4}) {
-    auto asset = std::make_shared<TranslucentAsset>();
-    asset->name = "testSphere";
-    asset->unitsPerMm = 1.0;
-    makeCubeSphere(*asset, log2Size, radius);
-    asset->defaultMaterial = material;
-    asset->range = rangeAround(material, 1.5, 1.3, 1.5);
+// Completes an asset whose samples and render mesh are placed: a basis fitted over a narrow
+// range around `material` with every pair of samples inside rMax, the lossless transfer,
+// (with envFaceSize > 0) environment vectors with 3 Fresnel terms, and per-vertex weights
+// onto the 4 nearest samples (inverse distance).
+inline void finishAsset(TranslucentAsset& asset, const Material& material, double rMax, std::uint32_t envFaceSize) {
+    asset.unitsPerMm = 1.0;
+    asset.defaultMaterial = material;
+    asset.range = rangeAround(material, 1.5, 1.3, 1.5);
     ProfileBasisSettings settings;
     settings.K = 12;
-    settings.rMax = 2.2 * radius;
+    settings.rMax = rMax;
     settings.radialSamples = 512;
     settings.trainingMaterials = 256;
-    settings.range = asset->range;
-    asset->basis = ProfileBasis::fit(settings);
-    buildTransfer(*asset, 1.0, 1.0);
+    settings.range = asset.range;
+    asset.basis = ProfileBasis::fit(settings);
+    buildTransfer(asset, 1.0, 1.0);
     if (envFaceSize > 0)
-        asset->environment = environmentTransfer(*asset, envFaceSize, 3, [](std::size_t, const Imath::V3f&) { return true; });
+        asset.environment = environmentTransfer(asset, envFaceSize, 3, [](std::size_t, const Imath::V3f&) { return true; });
 
-    VertexWeights& w = asset->vertexWeights;
+    VertexWeights& w = asset.vertexWeights;
     w.offsets = {0};
-    for (const Imath::V3f& p : asset->mesh.points) {
+    for (const Imath::V3f& p : asset.mesh.points) {
         std::vector<std::pair<float, std::uint32_t>> nearest;
-        for (std::uint32_t i = 0; i < asset->samples.size(); ++i)
-            nearest.emplace_back((asset->samples[i].position - p).length(), i);
+        for (std::uint32_t i = 0; i < asset.samples.size(); ++i)
+            nearest.emplace_back((asset.samples[i].position - p).length(), i);
         std::partial_sort(nearest.begin(), nearest.begin() + 4, nearest.end());
         float sum = 0.0f;
-        for (int j = 0; j < 4; ++j) sum += 1.0f / nearest[j].first;
+        for (int j = 0; j < 4; ++j) sum += 1.0f / std::max(nearest[j].first, 1e-6f);
         for (int j = 0; j < 4; ++j) {
             w.samples.push_back(nearest[j].second);
-            w.weights.push_back(1.0f / nearest[j].first / sum);
+            w.weights.push_back(1.0f / std::max(nearest[j].first, 1e-6f) / sum);
         }
         w.offsets.push_back(std::uint32_t(w.samples.size()));
     }
+}
+
+inline const Material& testMaterial() {
+    static const Material material{{1.2, 0.9, 0.7}, {0.05, 0.1, 0.2}, 1.4};
+    return material;
+}
+
+// The cube-sphere of synthetic_asset.h (6 x 2^log2Size^2 samples, radius in mm).
+inline std::shared_ptr<TranslucentAsset> sphereAsset(std::uint32_t log2Size = 3, float radius = 5.0f,
+                                                     std::uint32_t envFaceSize = 4,
+                                                     Material material = testMaterial()) {
+    auto asset = std::make_shared<TranslucentAsset>();
+    asset->name = "testSphere";
+    makeCubeSphere(*asset, log2Size, radius);
+    finishAsset(*asset, material, 2.2 * radius, envFaceSize);
+    return asset;
+}
+
+// A flat square, side mm on the plane y = 0 from (0, 0, 0) to (side, 0, side), normal +Y:
+// makeSlab's 8 x 8 samples and one quad as its render mesh. Its edges are straight lines.
+inline std::shared_ptr<TranslucentAsset> squareAsset(float side = 8.0f) {
+    auto asset = std::make_shared<TranslucentAsset>();
+    asset->name = "testSquare";
+    makeSlab(*asset, 1, 1, 3, side / 8.0f);
+    asset->mesh.points = {{0.0f, 0.0f, 0.0f}, {0.0f, 0.0f, side}, {side, 0.0f, side}, {side, 0.0f, 0.0f}};
+    asset->mesh.normals.assign(4, Imath::V3f(0.0f, 1.0f, 0.0f));
+    asset->mesh.faceVertexCounts = {4};
+    asset->mesh.faceVertexIndices = {0, 1, 2, 3};
+    finishAsset(*asset, testMaterial(), 1.5 * side, 0);
     return asset;
 }
 

@@ -145,7 +145,7 @@ TEST(Render, TwoLightsRenderAsTheSumOfEachAlone) {
     index.sync();
     const test::Aovs fillOnly = test::renderAovs(delegate, index, test::CameraPath, W, H);
 
-    for (const hd::Token& aov : {"color", "subsurface", "specular", "irradiance"}) {
+    for (const std::string aov : {"color", "subsurface", "specular", "irradiance"}) {
         std::vector<float> sum = keyOnly.data.at(aov);
         for (std::size_t i = 0; i < sum.size(); ++i) sum[i] += fillOnly.data.at(aov)[i];
         for (int y = 0; y < H; ++y)
