@@ -1,6 +1,6 @@
 #include "bake/usda_mesh_import.h"
 
-#include "bake/usda_xform_ops.h"
+#include "bake/prim_transform.h"
 #include "schema/asset/point_range.h"
 #include "schema/error.h"
 #include "schema/usd/usda_reader.h"

@@ -452,7 +452,7 @@ std::vector<BadLayer> badLayers() {
          "</Cube>.subdivisionScheme: 'smooth' is not one of catmullClark, loop, bilinear, none",
          "uniform token subdivisionScheme"},
         {"unsupported xformOp", layer(meshPrim("Cube", cube, "    float3 xformOp:shear = (1, 0, 0)\n" + order)),
-         "</Cube>.xformOpOrder: unsupported xformOp type 'shear'", "uniform token[] xformOpOrder"},
+         "</Cube>.xformOpOrder: lists 'xformOp:shear', which is not a supported xformOp", "uniform token[] xformOpOrder"},
         {"op listed, not authored", layer(meshPrim("Cube", cube, "    uniform token[] xformOpOrder = [\"xformOp:scale\"]\n")),
          "</Cube>.xformOpOrder: lists 'xformOp:scale' but the prim has no such attribute", "uniform token[] xformOpOrder"},
         {"unsupported construct", layer("def Xform \"World\" (\n    variantSets = \"look\"\n)\n{\n}\n"),
