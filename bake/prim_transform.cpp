@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <optional>
-#include <span>
 #include <string_view>
 
 namespace opal {
@@ -20,12 +19,6 @@ constexpr std::string_view kOpPrefix = "xformOp:";
     throw Error(where.str() + ": <" + primPath + ">." + std::string(property) + ": " + problem);
 }
 
-std::string acceptedNames(std::span<const usda::ValueType> accepted) {
-    std::string names;
-    for (usda::ValueType t : accepted) names += (names.empty() ? "" : " or ") + usda::typeName(t);
-    return names;
-}
-
 // The matrix the entry of xformOpOrder contributes ("!invert!xformOp:translate:pivot").
 Imath::M44d evaluateEntry(const usda::Prim& prim, const std::string& primPath, const usda::Attribute& order,
                           std::string_view entry) {
@@ -36,16 +29,10 @@ Imath::M44d evaluateEntry(const usda::Prim& prim, const std::string& primPath, c
                  "', which is not a supported xformOp (supported: translate, scale, rotateX/Y/Z, rotateXYZ and other "
                  "orders, orient, transform)");
     }
-    const usda::Attribute* attr = prim.findAttribute(op->opName);
+    const usda::Attribute* attr = prim.findValue(op->opName, usda::xformOpValueTypes(op->type), "<" + primPath + ">");
     if (!attr) {
         fail(order.location, primPath, order.name,
-             "lists '" + std::string(op->opName) + "' but the prim has no such attribute");
-    }
-    if (!attr->hasValue()) fail(attr->location, primPath, op->opName, "has no value (it is listed in xformOpOrder)");
-    const std::span<const usda::ValueType> accepted = usda::xformOpValueTypes(op->type);
-    if (std::find(accepted.begin(), accepted.end(), attr->value->type()) == accepted.end()) {
-        fail(attr->location, primPath, op->opName,
-             "has type " + usda::typeName(attr->value->type()) + ", expected " + acceptedNames(accepted));
+             "lists '" + std::string(op->opName) + "', which the prim does not author with a value");
     }
     try {
         return usda::xformOpMatrix(*op, *attr->value);
@@ -72,15 +59,10 @@ std::vector<std::string> unusedOps(const usda::Prim& prim, const std::vector<std
 
 PrimTransform primTransform(const usda::Prim& prim, const std::string& primPath) {
     PrimTransform result;
-    const usda::Attribute* order = prim.findAttribute("xformOpOrder");
-    std::vector<std::string> entries;
-    if (order && order->hasValue()) {
-        if (!order->value->is<types::TokenArray>()) {
-            fail(order->location, primPath, order->name,
-                 "has type " + usda::typeName(order->value->type()) + ", expected token[]");
-        }
-        entries = order->value->get<types::TokenArray>("attribute 'xformOpOrder'");
-    }
+    const usda::ValueType orderType[] = {types::TokenArray};
+    const usda::Attribute* order = prim.findValue("xformOpOrder", orderType, "<" + primPath + ">");
+    const std::vector<std::string> entries =
+        order ? std::get<std::vector<std::string>>(order->value->data()) : std::vector<std::string>();
     // Listed first op acts last on points: each op multiplies from the left (row vectors).
     for (const std::string& entry : entries) {
         if (entry == usda::kResetXformStack) {  // as USD: the ops before it are dropped too
