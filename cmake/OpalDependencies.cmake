@@ -7,20 +7,26 @@ function(opal_require found name package)
   endif()
 endfunction()
 
+# Opal::<name>, an imported target for a library found by its header and library file (for
+# packages whose CMake config is missing or broken); sets <name>_FOUND.
+function(opal_import_library name header library)
+  find_path(${name}_INCLUDE_DIR ${header})
+  find_library(${name}_LIBRARY ${library})
+  if(${name}_INCLUDE_DIR AND ${name}_LIBRARY)
+    add_library(Opal::${name} UNKNOWN IMPORTED GLOBAL)
+    set_target_properties(Opal::${name} PROPERTIES
+      IMPORTED_LOCATION "${${name}_LIBRARY}"
+      INTERFACE_INCLUDE_DIRECTORIES "${${name}_INCLUDE_DIR}")
+    set(${name}_FOUND TRUE PARENT_SCOPE)
+  endif()
+endfunction()
+
 find_package(PkgConfig QUIET)
 opal_require(PkgConfig_FOUND "pkg-config" "pkg-config")
 
 # OpenSubdiv: its packaged CMake config names static libraries that Debian does not ship,
 # so find_package fails fatally; find the header and library ourselves.
-find_path(OPENSUBDIV_INCLUDE_DIR opensubdiv/far/topologyRefiner.h)
-find_library(OPENSUBDIV_CPU_LIBRARY osdCPU)
-if(OPENSUBDIV_INCLUDE_DIR AND OPENSUBDIV_CPU_LIBRARY)
-  add_library(Opal::OpenSubdiv UNKNOWN IMPORTED)
-  set_target_properties(Opal::OpenSubdiv PROPERTIES
-    IMPORTED_LOCATION "${OPENSUBDIV_CPU_LIBRARY}"
-    INTERFACE_INCLUDE_DIRECTORIES "${OPENSUBDIV_INCLUDE_DIR}")
-  set(OpenSubdiv_FOUND TRUE)
-endif()
+opal_import_library(OpenSubdiv opensubdiv/far/topologyRefiner.h osdCPU)
 opal_require(OpenSubdiv_FOUND "OpenSubdiv" "libosd-dev")
 
 # OpenColorIO: the CMake config computes a wrong include prefix; pkg-config is right.
@@ -55,6 +61,10 @@ find_package(Eigen3 CONFIG QUIET)
 opal_require(Eigen3_FOUND "Eigen" "libeigen3-dev")
 find_package(zstd CONFIG QUIET)
 opal_require(zstd_FOUND "zstd" "libzstd-dev")
+
+# xxHash (the sidecar's XXH64 checksums) ships no CMake config: find its header and library.
+opal_import_library(xxhash xxhash.h xxhash)
+opal_require(xxhash_FOUND "xxHash" "libxxhash-dev")
 find_package(nlohmann_json CONFIG QUIET)
 opal_require(nlohmann_json_FOUND "nlohmann-json" "nlohmann-json3-dev")
 find_package(CLI11 CONFIG QUIET)
