@@ -1,5 +1,8 @@
-# Every dependency Opal uses, found once, here. A missing one stops the configure step
-# with a message naming the Debian package that provides it (scripts/setup installs them).
+# Every dependency of Opal's libraries, tools and tests, found once, here. A missing one
+# stops the configure step with a message naming the Debian package that provides it
+# (scripts/setup installs them). The viewer's own dependencies (OpenGL, GLFW, Dear ImGui,
+# glad) are not among them: OpalViewerDependencies.cmake looks for them where the viewer's
+# target is defined, so a headless build needs none of them.
 
 function(opal_require found name package)
   if(NOT ${found})
@@ -72,20 +75,8 @@ opal_require(CLI11_FOUND "CLI11" "libcli11-dev")
 find_package(assimp CONFIG QUIET)
 opal_require(assimp_FOUND "Assimp" "libassimp-dev")
 
-set(OpenGL_GL_PREFERENCE GLVND)
-find_package(OpenGL QUIET)
-opal_require(OpenGL_FOUND "OpenGL" "libgl-dev")
-find_package(glfw3 CONFIG QUIET)
-opal_require(glfw3_FOUND "GLFW" "libglfw3-dev")
-pkg_check_modules(IMGUI QUIET IMPORTED_TARGET imgui)
-opal_require(IMGUI_FOUND "Dear ImGui" "libimgui-dev")
-find_program(OPAL_GLAD_EXECUTABLE glad PATHS /usr/bin NO_DEFAULT_PATH)
-opal_require(OPAL_GLAD_EXECUTABLE "glad (OpenGL loader generator)" "python3-glad")
-
 find_package(GTest CONFIG QUIET)
 opal_require(GTest_FOUND "GoogleTest" "libgtest-dev")
-find_package(benchmark CONFIG QUIET)
-opal_require(benchmark_FOUND "Google Benchmark" "libbenchmark-dev")
 
 if(TARGET zstd::libzstd_shared)
   add_library(Opal::zstd ALIAS zstd::libzstd_shared)
