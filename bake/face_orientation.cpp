@@ -1,5 +1,7 @@
 #include "bake/face_orientation.h"
 
+#include "schema/asset/fan_triangulation.h"
+
 #include <Imath/ImathBox.h>
 
 namespace opal {
@@ -78,14 +80,11 @@ double enclosedVolume(std::span<const Imath::V3f> positions, std::span<const std
     Imath::Box3d bounds;
     for (const Imath::V3f& p : positions) bounds.extendBy(Imath::V3d(p));
     Imath::V3d centre = bounds.center();  // about the centre: less cancellation
-    auto at = [&](std::size_t corner) { return Imath::V3d(positions[faceVertexIndices[corner]]) - centre; };
+    auto at = [&](std::int32_t vertex) { return Imath::V3d(positions[std::size_t(vertex)]) - centre; };
     double sixTimesVolume = 0.0;
-    std::size_t start = 0;
-    for (std::int32_t n : faceVertexCounts) {
-        Imath::V3d p0 = at(start);
-        for (std::size_t c = start + 1; c + 1 < start + std::size_t(n); ++c) sixTimesVolume += p0.dot(at(c).cross(at(c + 1)));
-        start += std::size_t(n);
-    }
+    forEachFanTriangle(faceVertexCounts, faceVertexIndices, [&](std::size_t, const std::array<std::int32_t, 3>& v) {
+        sixTimesVolume += at(v[0]).dot(at(v[1]).cross(at(v[2])));
+    });
     return sixTimesVolume / 6.0;
 }
 

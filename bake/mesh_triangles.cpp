@@ -1,22 +1,18 @@
 #include "bake/mesh_triangles.h"
 
+#include "schema/asset/fan_triangulation.h"
+
 #include <tbb/parallel_for.h>
 
 namespace opal {
 
 MeshTriangles triangulate(const RenderMesh& mesh) {
     MeshTriangles result;
-    std::size_t start = 0;
-    for (std::size_t f = 0; f < mesh.faceVertexCounts.size(); ++f) {
-        std::int32_t n = mesh.faceVertexCounts[f];
-        for (std::int32_t c = 1; c + 1 < n; ++c) {
-            result.triangles.push_back({{std::uint32_t(mesh.faceVertexIndices[start]),
-                                         std::uint32_t(mesh.faceVertexIndices[start + c]),
-                                         std::uint32_t(mesh.faceVertexIndices[start + c + 1])},
-                                        std::uint32_t(f)});
-        }
-        start += std::size_t(n);
-    }
+    forEachFanTriangle(mesh.faceVertexCounts, mesh.faceVertexIndices,
+                       [&](std::size_t face, const std::array<std::int32_t, 3>& v) {
+                           result.triangles.push_back(
+                               {{std::uint32_t(v[0]), std::uint32_t(v[1]), std::uint32_t(v[2])}, std::uint32_t(face)});
+                       });
     result.areas.resize(result.triangles.size());
     tbb::parallel_for(std::size_t(0), result.triangles.size(), [&](std::size_t t) {
         const auto& v = result.triangles[t].vertices;

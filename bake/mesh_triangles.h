@@ -1,6 +1,5 @@
 // The render mesh's polygons as triangles, with each triangle's face and area: what the
-// surface sampler draws from. Polygons are split into fans from their first corner
-// (render-mesh faces are the refined quads or triangles, close to planar).
+// surface sampler draws from. Polygons are split into fans (schema/asset/fan_triangulation.h).
 #pragma once
 
 #include "schema/asset/translucent_asset.h"

@@ -1,6 +1,6 @@
 #include "bake/usda_mesh_import.h"
 
-#include "bake/usda_xform_ops.h"
+#include "bake/prim_transform.h"
 #include "schema/asset/point_range.h"
 #include "schema/error.h"
 #include "schema/usd/usda_reader.h"
@@ -40,22 +40,9 @@ const usda::SourceLocation& locationOf(const Prim& prim, std::string_view name) 
     return attr ? attr->location : prim.location;
 }
 
-// The value of attribute `name` when it is authored and not blocked; nullptr otherwise.
-// Throws for a value of another type.
-template <usda::ValueType T>
-const usda::StorageOf<T>* authored(const Prim& prim, const std::string& path, std::string_view name) {
-    const Attribute* attr = prim.findAttribute(name);
-    if (!attr || !attr->hasValue()) return nullptr;
-    if (!attr->value->is<T>()) {
-        fail(attr->location, path, name,
-             "has type " + usda::typeName(attr->value->type()) + ", expected " + usda::typeName(T));
-    }
-    return &std::get<usda::StorageOf<T>>(attr->value->data());
-}
-
 template <usda::ValueType T>
 const usda::StorageOf<T>& required(const Prim& prim, const std::string& path, std::string_view name) {
-    if (const usda::StorageOf<T>* value = authored<T>(prim, path, name)) return *value;
+    if (const usda::StorageOf<T>* value = prim.findValue<T>(name, bracketed(path))) return *value;
     const bool declared = prim.findAttribute(name) != nullptr;
     fail(locationOf(prim, name), path, name,
          std::string(declared ? "has no value" : "missing") +
@@ -65,7 +52,7 @@ const usda::StorageOf<T>& required(const Prim& prim, const std::string& path, st
 // A token attribute restricted to `allowed`; `fallback` when it is not authored.
 std::string token(const Prim& prim, const std::string& path, std::string_view name,
                   std::initializer_list<std::string_view> allowed, std::string_view fallback) {
-    const std::string* value = authored<types::Token>(prim, path, name);
+    const std::string* value = prim.findValue<types::Token>(name, bracketed(path));
     if (!value) return std::string(fallback);
     if (std::find(allowed.begin(), allowed.end(), *value) != allowed.end()) return *value;
     std::string names;
@@ -136,7 +123,7 @@ void checkTopology(const Prim& prim, const std::string& path, std::size_t points
 // holeIndices: faces USD does not draw. The bake leaves them out.
 std::vector<bool> holeFaces(const Prim& prim, const std::string& path, std::size_t faces) {
     std::vector<bool> holes(faces, false);
-    const std::vector<std::int32_t>* indices = authored<types::IntArray>(prim, path, "holeIndices");
+    const std::vector<std::int32_t>* indices = prim.findValue<types::IntArray>("holeIndices", bracketed(path));
     if (!indices) return holes;
     for (std::int32_t f : *indices) {
         if (f < 0 || std::size_t(f) >= faces) {
@@ -149,20 +136,17 @@ std::vector<bool> holeFaces(const Prim& prim, const std::string& path, std::size
 }
 
 // Authored subdivision tags that Opal's uniform refinement does not apply.
-std::vector<std::string> ignoredTags(const Prim& prim) {
+std::vector<std::string> ignoredTags(const Prim& prim, const std::string& path) {
     std::vector<std::string> tags;
     for (std::string_view name : {"creaseIndices", "cornerIndices"}) {
-        const Attribute* a = prim.findAttribute(name);
-        const bool empty =
-            a && a->value && a->value->is<types::IntArray>() && a->value->get<types::IntArray>("").empty();
-        if (a && a->hasValue() && !empty) tags.emplace_back(name);
+        const std::vector<std::int32_t>* indices = prim.findValue<types::IntArray>(name, bracketed(path));
+        if (indices && !indices->empty()) tags.emplace_back(name);
     }
     const std::pair<std::string_view, std::string_view> defaults[] = {{"interpolateBoundary", "edgeAndCorner"},
                                                                       {"triangleSubdivisionRule", "catmullClark"}};
     for (const auto& [name, fallback] : defaults) {
-        const Attribute* a = prim.findAttribute(name);
-        if (a && a->value && a->value->is<types::Token>() && a->value->get<types::Token>("") != fallback)
-            tags.push_back(std::string(name) + " '" + a->value->get<types::Token>("") + "'");
+        const std::string* value = prim.findValue<types::Token>(name, bracketed(path));
+        if (value && *value != fallback) tags.push_back(std::string(name) + " '" + *value + "'");
     }
     return tags;
 }
@@ -249,7 +233,7 @@ private:
         const bool leftHanded =
             token(prim, path, "orientation", {"rightHanded", "leftHanded"}, "rightHanded") == "leftHanded";
         std::string scheme = token(prim, path, "subdivisionScheme", {"catmullClark", "loop", "bilinear", "none"}, "");
-        for (const std::string& tag : ignoredTags(prim))
+        for (const std::string& tag : ignoredTags(prim, path))
             warnings_.push_back(bracketed(path) + ": ignored " + tag + " (the bake refines without subdivision tags)");
         if (counts.empty()) {
             emptyMeshes_.push_back(bracketed(path));

@@ -10,7 +10,7 @@
 //   holeIndices (those faces are left out), orientation ("leftHanded" reverses every
 //   face) and subdivisionScheme (exposed as ImportedMesh::authoredScheme when every Mesh
 //   prim authors the same one; "bilinear" and "none" mean Bilinear: keep the polygons flat);
-// - transforms: xformOps on the Mesh prim and its ancestors (usda_xform_ops.h); a
+// - transforms: xformOps on the Mesh prim and its ancestors (prim_transform.h); a
 //   mirroring transform reverses the faces, as in the Assimp path;
 // - the layer's metersPerUnit is returned for the caller to report, never applied.
 //

@@ -15,8 +15,9 @@
 // The lvl column is the level the bake used. Other meshes: --mesh PATH (repeatable) with
 // --samples (repeatable), --level and
 // --units-per-mm.
-#include "bench/output.h"
+#include "bench/output_folder.h"
 #include "bench/subcommand.h"
+#include "schema/usd/atomic_file.h"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -321,7 +322,7 @@ int runBakeBench(int argc, char** argv) {
         }
         printTable(results);
         if (!options.jsonFile.empty()) {
-            writeTextAtomically(options.jsonFile, resultsJson(results).dump(2) + "\n");
+            writeFileAtomically(options.jsonFile, resultsJson(results).dump(2) + "\n");
             std::printf("\nwrote %s\n", options.jsonFile.c_str());
         }
     } catch (const std::exception& e) {

@@ -1,11 +1,12 @@
 // `opal-bench basis`: accuracy of the PCA profile basis (docs/ARCHITECTURE.md#pca) against the
 // exact dipole, over held-out random materials and the ten Jensen presets, for K = 4..20,
 // plus the paper's Figure 2 (first four basis functions, eigenvalue spectrum).
-#include "bench/output.h"
+#include "bench/output_folder.h"
 #include "bench/plot.h"
 #include "bench/subcommand.h"
 #include "schema/scatter/material_sampler.h"
 #include "schema/scatter/profile_basis.h"
+#include "schema/usd/atomic_file.h"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -171,9 +172,9 @@ int runBasis(int argc, char** argv) {
         if (!options.jsonFile.empty()) ensureDirectory(options.jsonFile.parent_path().empty() ? "." : options.jsonFile.parent_path());
         const Report report = measure(options);
         printTable(report);
-        writeTextAtomically(options.outputDir / "basis_error.csv", errorCsv(report));
+        writeFileAtomically(options.outputDir / "basis_error.csv", errorCsv(report));
         drawFigure(report.basis, options.outputDir / "basis.png");
-        if (!options.jsonFile.empty()) writeTextAtomically(options.jsonFile, reportJson(report));
+        if (!options.jsonFile.empty()) writeFileAtomically(options.jsonFile, reportJson(report));
         std::printf("\nwrote %s and %s\n", (options.outputDir / "basis_error.csv").c_str(),
                     (options.outputDir / "basis.png").c_str());
     } catch (const std::exception& e) {

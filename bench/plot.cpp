@@ -1,6 +1,6 @@
 #include "bench/plot.h"
 
-#include "bench/output.h"
+#include "schema/usd/atomic_file.h"
 
 #include <OpenImageIO/imagebufalgo.h>
 
@@ -76,9 +76,8 @@ void Canvas::text(int x, int y, std::string_view text, int size, const Color& co
 }
 
 void Canvas::write(const std::filesystem::path& path) const {
-    writeFileAtomically(path, [&](const std::filesystem::path& tmp) {
-        if (image_.write(tmp.string(), OIIO::TypeDesc::UINT8)) return true;
-        throw std::runtime_error(image_.geterror());
+    writeAtomically(path, [&](const std::filesystem::path& tmp) {
+        if (!image_.write(tmp.string(), OIIO::TypeDesc::UINT8)) throw std::runtime_error(image_.geterror());
     });
 }
 

@@ -13,9 +13,10 @@
 #include "bake/chart_parameterization.h"
 #include "bake/sample_count.h"
 #include "bake/transfer_row.h"
-#include "bench/output.h"
+#include "bench/output_folder.h"
 #include "bench/subcommand.h"
 #include "schema/scatter/profile_basis.h"
+#include "schema/usd/atomic_file.h"
 #include "schema/wavelet/haar.h"
 #include "schema/wavelet/nonstandard.h"
 #include "schema/wavelet/sparse.h"
@@ -390,7 +391,7 @@ int runTransferRow(int argc, char** argv) {
         const Scene scene = makeScene(options);
         const Report report = measure(options, scene);
         printReport(report, options);
-        if (!options.jsonFile.empty()) writeTextAtomically(options.jsonFile, reportJson(report, options));
+        if (!options.jsonFile.empty()) writeFileAtomically(options.jsonFile, reportJson(report, options));
         return report.row.mismatches + report.haar.mismatches + report.keep.mismatches == 0 ? 0 : 1;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "opal-bench transfer-row: %s\n", e.what());

@@ -1,9 +1,26 @@
-# Every dependency Opal uses, found once, here. A missing one stops the configure step
-# with a message naming the Debian package that provides it (scripts/setup installs them).
+# Every dependency of Opal's libraries, tools and tests, found once, here. A missing one
+# stops the configure step with a message naming the Debian package that provides it
+# (scripts/setup installs them). The viewer's own dependencies (OpenGL, GLFW, Dear ImGui,
+# glad) are not among them: OpalViewerDependencies.cmake looks for them where the viewer's
+# target is defined, so a headless build needs none of them.
 
 function(opal_require found name package)
   if(NOT ${found})
     message(FATAL_ERROR "Opal needs ${name}: install the Debian package '${package}' (or run scripts/setup)")
+  endif()
+endfunction()
+
+# Opal::<name>, an imported target for a library found by its header and library file (for
+# packages whose CMake config is missing or broken); sets <name>_FOUND.
+function(opal_import_library name header library)
+  find_path(${name}_INCLUDE_DIR ${header})
+  find_library(${name}_LIBRARY ${library})
+  if(${name}_INCLUDE_DIR AND ${name}_LIBRARY)
+    add_library(Opal::${name} UNKNOWN IMPORTED GLOBAL)
+    set_target_properties(Opal::${name} PROPERTIES
+      IMPORTED_LOCATION "${${name}_LIBRARY}"
+      INTERFACE_INCLUDE_DIRECTORIES "${${name}_INCLUDE_DIR}")
+    set(${name}_FOUND TRUE PARENT_SCOPE)
   endif()
 endfunction()
 
@@ -12,15 +29,7 @@ opal_require(PkgConfig_FOUND "pkg-config" "pkg-config")
 
 # OpenSubdiv: its packaged CMake config names static libraries that Debian does not ship,
 # so find_package fails fatally; find the header and library ourselves.
-find_path(OPENSUBDIV_INCLUDE_DIR opensubdiv/far/topologyRefiner.h)
-find_library(OPENSUBDIV_CPU_LIBRARY osdCPU)
-if(OPENSUBDIV_INCLUDE_DIR AND OPENSUBDIV_CPU_LIBRARY)
-  add_library(Opal::OpenSubdiv UNKNOWN IMPORTED)
-  set_target_properties(Opal::OpenSubdiv PROPERTIES
-    IMPORTED_LOCATION "${OPENSUBDIV_CPU_LIBRARY}"
-    INTERFACE_INCLUDE_DIRECTORIES "${OPENSUBDIV_INCLUDE_DIR}")
-  set(OpenSubdiv_FOUND TRUE)
-endif()
+opal_import_library(OpenSubdiv opensubdiv/far/topologyRefiner.h osdCPU)
 opal_require(OpenSubdiv_FOUND "OpenSubdiv" "libosd-dev")
 
 # OpenColorIO: the CMake config computes a wrong include prefix; pkg-config is right.
@@ -55,6 +64,10 @@ find_package(Eigen3 CONFIG QUIET)
 opal_require(Eigen3_FOUND "Eigen" "libeigen3-dev")
 find_package(zstd CONFIG QUIET)
 opal_require(zstd_FOUND "zstd" "libzstd-dev")
+
+# xxHash (the sidecar's XXH64 checksums) ships no CMake config: find its header and library.
+opal_import_library(xxhash xxhash.h xxhash)
+opal_require(xxhash_FOUND "xxHash" "libxxhash-dev")
 find_package(nlohmann_json CONFIG QUIET)
 opal_require(nlohmann_json_FOUND "nlohmann-json" "nlohmann-json3-dev")
 find_package(CLI11 CONFIG QUIET)
@@ -62,20 +75,8 @@ opal_require(CLI11_FOUND "CLI11" "libcli11-dev")
 find_package(assimp CONFIG QUIET)
 opal_require(assimp_FOUND "Assimp" "libassimp-dev")
 
-set(OpenGL_GL_PREFERENCE GLVND)
-find_package(OpenGL QUIET)
-opal_require(OpenGL_FOUND "OpenGL" "libgl-dev")
-find_package(glfw3 CONFIG QUIET)
-opal_require(glfw3_FOUND "GLFW" "libglfw3-dev")
-pkg_check_modules(IMGUI QUIET IMPORTED_TARGET imgui)
-opal_require(IMGUI_FOUND "Dear ImGui" "libimgui-dev")
-find_program(OPAL_GLAD_EXECUTABLE glad PATHS /usr/bin NO_DEFAULT_PATH)
-opal_require(OPAL_GLAD_EXECUTABLE "glad (OpenGL loader generator)" "python3-glad")
-
 find_package(GTest CONFIG QUIET)
 opal_require(GTest_FOUND "GoogleTest" "libgtest-dev")
-find_package(benchmark CONFIG QUIET)
-opal_require(benchmark_FOUND "Google Benchmark" "libbenchmark-dev")
 
 if(TARGET zstd::libzstd_shared)
   add_library(Opal::zstd ALIAS zstd::libzstd_shared)

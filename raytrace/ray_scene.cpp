@@ -1,5 +1,6 @@
 #include "raytrace/ray_scene.h"
 
+#include "schema/asset/fan_triangulation.h"
 #include "schema/error.h"
 
 #include <algorithm>
@@ -77,7 +78,8 @@ bool shadeableNormal(float x, float y, float z) {
     return m > 0.0f && m <= std::numeric_limits<float>::max();
 }
 
-// Fans every polygon (c0, c(t+1), c(t+2)), checking indices against the point count.
+// Fans every polygon (schema/asset/fan_triangulation.h), checking indices against the
+// point count first.
 void fanTriangles(const RenderMesh& mesh, std::vector<std::uint32_t>& triangles,
                   std::vector<std::uint32_t>& faceOfTriangle) {
     std::size_t corner = 0;
@@ -92,14 +94,13 @@ void fanTriangles(const RenderMesh& mesh, std::vector<std::uint32_t>& triangles,
                 throw Error("ray scene: face " + std::to_string(face) + " uses vertex " + std::to_string(v) +
                             " of " + std::to_string(mesh.points.size()));
         }
-        for (std::int32_t t = 0; t + 2 < count; ++t) {
-            triangles.push_back(std::uint32_t(mesh.faceVertexIndices[corner]));
-            triangles.push_back(std::uint32_t(mesh.faceVertexIndices[corner + std::size_t(t) + 1]));
-            triangles.push_back(std::uint32_t(mesh.faceVertexIndices[corner + std::size_t(t) + 2]));
-            faceOfTriangle.push_back(std::uint32_t(face));
-        }
         corner += std::size_t(count);
     }
+    forEachFanTriangle(mesh.faceVertexCounts, mesh.faceVertexIndices,
+                       [&](std::size_t face, const std::array<std::int32_t, 3>& v) {
+                           for (std::int32_t vertex : v) triangles.push_back(std::uint32_t(vertex));
+                           faceOfTriangle.push_back(std::uint32_t(face));
+                       });
 }
 
 static_assert(RayScene::kMaxWorldCoordinate == 1e12, "the message below quotes the limit");

@@ -1,7 +1,7 @@
 #include "delegate/output/exr_writer.h"
 
-#include "delegate/output/atomic_write.h"
 #include "schema/error.h"
+#include "schema/usd/atomic_file.h"
 
 #include <Imath/half.h>
 #include <OpenEXR/ImfChannelList.h>

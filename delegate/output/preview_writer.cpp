@@ -1,7 +1,7 @@
 #include "delegate/output/preview_writer.h"
 
-#include "delegate/output/atomic_write.h"
 #include "schema/error.h"
+#include "schema/usd/atomic_file.h"
 
 #include <OpenImageIO/imageio.h>
 

@@ -1,8 +1,8 @@
 #include "examples/opal-render/frame_files.h"
 
-#include "delegate/output/atomic_write.h"
 #include "delegate/output/preview_writer.h"
 #include "schema/error.h"
+#include "schema/usd/atomic_file.h"
 
 #include <algorithm>
 #include <cctype>

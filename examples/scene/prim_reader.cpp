@@ -7,15 +7,6 @@
 #include <sstream>
 
 namespace opal::scene {
-namespace {
-
-std::string acceptedTypes(std::span<const usda::ValueType> accepted) {
-    std::string text;
-    for (const usda::ValueType& type : accepted) text += (text.empty() ? "" : " or ") + usda::typeName(type);
-    return text;
-}
-
-}  // namespace
 
 std::string Bounds::describe() const {
     const bool hasMin = std::isfinite(min), hasMax = std::isfinite(max);
@@ -53,15 +44,7 @@ const usda::Property* PrimReader::findProperty(std::string_view name) const {
 
 const usda::Attribute* PrimReader::find(std::string_view name, std::span<const usda::ValueType> accepted) {
     understood_.emplace(name);
-    const usda::Property* property = findProperty(name);
-    if (!property) return nullptr;
-    const auto* attribute = std::get_if<usda::Attribute>(property);
-    if (!attribute)
-        fail(usda::propertyLocation(*property),
-             quotedName(name) + " is a relationship, expected an attribute of type " + acceptedTypes(accepted));
-    if (std::find(accepted.begin(), accepted.end(), attribute->type) == accepted.end())
-        failAt(*attribute, "has type " + usda::typeName(attribute->type) + ", expected " + acceptedTypes(accepted));
-    return attribute->hasValue() ? attribute : nullptr;
+    return prim_.findValue(name, accepted, describe());
 }
 
 std::optional<double> PrimReader::real(std::string_view name, usda::ValueType declared, Bounds bounds) {

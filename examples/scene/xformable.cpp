@@ -1,33 +1,22 @@
 #include "examples/scene/xformable.h"
 
-#include "examples/scene/xform_op.h"
+#include "schema/usd/xform_op.h"
 
-#include <cmath>
+#include <optional>
 #include <set>
 
 namespace opal::scene {
 namespace {
 
-constexpr std::string_view InvertPrefix = "!invert!";
-constexpr std::string_view ResetXformStack = "!resetXformStack!";
-
 // The matrix of one xformOpOrder entry ("xformOp:scale" or "!invert!xformOp:translate:pivot").
-Imath::M44d entryMatrix(PrimReader& reader, const usda::Attribute& order, std::string_view entry) {
-    const bool invert = entry.starts_with(InvertPrefix);
-    const std::string_view name = invert ? entry.substr(InvertPrefix.size()) : entry;
-    const std::optional<XformOpType> type = parseXformOpName(name);
-    if (!type) reader.failAt(order, "lists " + quotedName(entry) + ", which is not an xformOp name (see examples/SCENES.md)");
-    const usda::Attribute* op = reader.find(name, xformOpValueTypes(*type));
-    if (!op) reader.failAt(order, "lists " + quotedName(name) + ", which the prim does not author with a value");
-    Imath::M44d m;
+Imath::M44d entryMatrix(PrimReader& reader, const usda::Attribute& order, const usda::XformOpOrderEntry& entry) {
+    const usda::Attribute* op = reader.find(entry.opName, usda::xformOpValueTypes(entry.type));
+    if (!op) reader.failAt(order, "lists " + quotedName(entry.opName) + ", which the prim does not author with a value");
     try {
-        m = xformOpMatrix(*type, *op->value);
+        return usda::xformOpMatrix(entry, *op->value);
     } catch (const Error& e) {
         reader.failAt(*op, e.what());
     }
-    if (!invert) return m;
-    if (std::abs(m.determinant()) < 1e-300) reader.failAt(*op, "is singular and cannot be inverted (" + std::string(entry) + ")");
-    return m.inverse();
 }
 
 void requireListed(const PrimReader& reader, const std::set<std::string_view>& listed) {
@@ -47,15 +36,17 @@ LocalTransform readLocalTransform(PrimReader& reader) {
         const auto& entries = std::get<std::vector<std::string>>(order->value->data());
         for (std::size_t i = 0; i < entries.size(); ++i) {
             const std::string_view entry = entries[i];
-            if (entry == ResetXformStack) {
+            if (entry == usda::kResetXformStack) {
                 if (i != 0) reader.failAt(*order, "has " + quotedName(entry) + " after its first entry");
                 local.resetsXformStack = true;
                 continue;
             }
             if (!seen.insert(entry).second) reader.failAt(*order, "lists " + quotedName(entry) + " twice");
+            const std::optional<usda::XformOpOrderEntry> op = usda::parseXformOpOrderEntry(entry);
+            if (!op) reader.failAt(*order, "lists " + quotedName(entry) + ", which is not an xformOp name (see examples/SCENES.md)");
             // Listed ops are outermost first: each one applies after those listed after it.
-            local.matrix = entryMatrix(reader, *order, entry) * local.matrix;
-            listed.insert(entry.starts_with(InvertPrefix) ? entry.substr(InvertPrefix.size()) : entry);
+            local.matrix = entryMatrix(reader, *order, *op) * local.matrix;
+            listed.insert(op->opName);
         }
     }
     requireListed(reader, listed);

@@ -113,11 +113,6 @@ usda::Dictionary bakeDictionary(const BakeSettings& bake) {
     return d;
 }
 
-template <usda::ValueType T>
-const usda::StorageOf<T>& required(const usda::Prim& prim, std::string_view name) {
-    return prim.attribute(name).get<T>();
-}
-
 Rgb toRgb(const usda::Vec3f& c) { return Rgb(c[0], c[1], c[2]); }
 
 BakeSettings readBakeSettings(const usda::Prim& prim) {
@@ -179,22 +174,22 @@ std::string primToAsset(const usda::Prim& prim, TranslucentAsset& asset) {
     if (!prim.hasApiSchema(kSubsurfaceApi))
         throw Error(where(prim) + ": prim '" + prim.name + "' does not apply " + std::string(kSubsurfaceApi));
     asset.name = prim.name;
-    asset.mesh.points = fromVecs(required<types::Point3fArray>(prim, "points"));
-    asset.mesh.normals = fromVecs(required<types::Normal3fArray>(prim, "normals"));
-    asset.mesh.faceVertexCounts = required<types::IntArray>(prim, "faceVertexCounts");
-    asset.mesh.faceVertexIndices = required<types::IntArray>(prim, "faceVertexIndices");
+    asset.mesh.points = fromVecs(prim.requiredValue<types::Point3fArray>("points"));
+    asset.mesh.normals = fromVecs(prim.requiredValue<types::Normal3fArray>("normals"));
+    asset.mesh.faceVertexCounts = prim.requiredValue<types::IntArray>("faceVertexCounts");
+    asset.mesh.faceVertexIndices = prim.requiredValue<types::IntArray>("faceVertexIndices");
 
-    asset.defaultMaterial.eta = required<types::Float>(prim, "opal:eta");
-    asset.defaultMaterial.sigmaA = toRgb(required<types::Color3f>(prim, "opal:sigmaA"));
-    asset.defaultMaterial.sigmaSPrime = toRgb(required<types::Color3f>(prim, "opal:sigmaSPrime"));
-    asset.unitsPerMm = required<types::Double>(prim, "opal:unitsPerMm");
-    const auto sigmaS = required<types::Double2>(prim, "opal:range:sigmaSPrime");
-    const auto sigmaA = required<types::Double2>(prim, "opal:range:sigmaA");
-    const auto eta = required<types::Double2>(prim, "opal:range:eta");
+    asset.defaultMaterial.eta = prim.requiredValue<types::Float>("opal:eta");
+    asset.defaultMaterial.sigmaA = toRgb(prim.requiredValue<types::Color3f>("opal:sigmaA"));
+    asset.defaultMaterial.sigmaSPrime = toRgb(prim.requiredValue<types::Color3f>("opal:sigmaSPrime"));
+    asset.unitsPerMm = prim.requiredValue<types::Double>("opal:unitsPerMm");
+    const auto sigmaS = prim.requiredValue<types::Double2>("opal:range:sigmaSPrime");
+    const auto sigmaA = prim.requiredValue<types::Double2>("opal:range:sigmaA");
+    const auto eta = prim.requiredValue<types::Double2>("opal:range:eta");
     asset.range = EditableRange{sigmaS[0], sigmaS[1], sigmaA[0], sigmaA[1], eta[0], eta[1]};
 
-    const int K = required<types::Int>(prim, "opal:basis:K");
-    const auto& eigenvalues = required<types::DoubleArray>(prim, "opal:basis:eigenvalues");
+    const int K = prim.requiredValue<types::Int>("opal:basis:K");
+    const auto& eigenvalues = prim.requiredValue<types::DoubleArray>("opal:basis:eigenvalues");
     if (K < 1 || std::size_t(K) != eigenvalues.size())
         throw Error(where(prim) + ": opal:basis:K is " + std::to_string(K) + " but there are " +
                     std::to_string(eigenvalues.size()) + " eigenvalues");
@@ -203,9 +198,9 @@ std::string primToAsset(const usda::Prim& prim, TranslucentAsset& asset) {
         checkPointRange(asset.mesh.points, asset.unitsPerMm, "points", "point");
         asset.range.validate("opal:range");
         validateMaterial(asset.defaultMaterial, "default material");
-        asset.basis = ProfileBasis(required<types::DoubleArray>(prim, "opal:basis:radii"),
-                                   required<types::DoubleArray>(prim, "opal:basis:weights"),
-                                   required<types::DoubleArray>(prim, "opal:basis:values"), eigenvalues, asset.range);
+        asset.basis = ProfileBasis(prim.requiredValue<types::DoubleArray>("opal:basis:radii"),
+                                   prim.requiredValue<types::DoubleArray>("opal:basis:weights"),
+                                   prim.requiredValue<types::DoubleArray>("opal:basis:values"), eigenvalues, asset.range);
     } catch (const usda::UsdaError&) {
         throw;
     } catch (const Error& e) {
@@ -213,7 +208,7 @@ std::string primToAsset(const usda::Prim& prim, TranslucentAsset& asset) {
     }
     asset.bake = readBakeSettings(prim);
     asset.bake.identifier = readBakeIdAttribute(prim);
-    return required<types::Asset>(prim, "opal:sidecar");
+    return prim.requiredValue<types::Asset>("opal:sidecar");
 }
 
 TranslucentAsset readAsset(const std::filesystem::path& usdaPath, std::vector<std::string>* warnings) {

@@ -1,14 +1,16 @@
-// XXH64 (Yann Collet's xxHash, 64-bit variant, seed 0 by default), implemented from the
-// published specification (github.com/Cyan4973/xxHash, doc/xxhash_spec.md). Opal uses it
-// as the checksum of sidecar headers, chunk tables and chunk bytes. zstd bundles XXH64 but
-// does not export it, so Opal carries its own; tests check it against the specification's
-// values and against the content checksum zstd writes into its frames.
+// XXH64 (Yann Collet's xxHash, 64-bit variant, seed 0 by default) from Debian's libxxhash
+// (libxxhash-dev), in the terms the rest of Opal speaks: spans of bytes. Opal uses it as
+// the checksum of sidecar headers, chunk tables and chunk bytes (SIDECAR.md). Tests check
+// it against published values, against the content checksum zstd writes into its frames,
+// and against a sidecar written before Opal used the library (tests/asset/legacy).
 #pragma once
 
-#include <array>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <span>
+
+struct XXH64_state_s;  // xxhash.h's streaming state, kept out of Opal's headers
 
 namespace opal {
 
@@ -22,13 +24,10 @@ public:
     std::uint64_t digest() const;
 
 private:
-    void consumeStripe(const std::byte* stripe);
-
-    std::array<std::uint64_t, 4> acc_;
-    std::uint64_t seed_;
-    std::uint64_t totalLength_ = 0;
-    std::array<std::byte, 32> pending_{};  // the start of an incomplete 32-byte stripe
-    std::size_t pendingLength_ = 0;
+    struct FreeState {
+        void operator()(XXH64_state_s* state) const;
+    };
+    std::unique_ptr<XXH64_state_s, FreeState> state_;
 };
 
 std::uint64_t xxh64(std::span<const std::byte> bytes, std::uint64_t seed = 0);

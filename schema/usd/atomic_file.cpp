@@ -18,21 +18,39 @@ namespace {
 
 constexpr std::size_t kBufferBytes = 1 << 20;
 
-std::filesystem::path temporaryPathFor(const std::filesystem::path& target) {
+// "<target file name>.tmp-<pid>-<random><suffix>" in the target's directory.
+std::filesystem::path temporaryPathFor(const std::filesystem::path& target, const std::filesystem::path& suffix) {
     std::random_device device;
     std::uint64_t random = (std::uint64_t(device()) << 32) ^ device();
     std::ostringstream name;
-    name << target.filename().string() << ".tmp-" << ::getpid() << '-' << std::hex << random;
+    name << target.filename().string() << ".tmp-" << ::getpid() << '-' << std::hex << random
+         << suffix.string();
     return target.parent_path() / name.str();
 }
 
 std::string errnoText() { return std::strerror(errno); }
+
+// "<target>: <what> '<temporary>': <the system's reason>".
+[[noreturn]] void fail(const std::filesystem::path& target, const std::filesystem::path& temporary,
+                       const char* what) {
+    std::string reason = errnoText();
+    throw Error(target.string() + ": " + what + " '" + temporary.string() + "': " + reason);
+}
 
 // "<extension without the dot>:<moment>", the crash points of one write (crash_point.h).
 void crashPointOf(const std::filesystem::path& target, std::string_view moment) {
     std::string extension = target.extension().string();
     if (!extension.empty()) extension.erase(0, 1);
     crashPoint(extension + ":" + std::string(moment));
+}
+
+// Created with O_EXCL so no other writer shares it, mode 0666 so the umask decides the
+// final permissions exactly as for a plainly written file.
+int createTemporary(const std::filesystem::path& target, const std::filesystem::path& temporary) {
+    int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd < 0) fail(target, temporary, "cannot create the temporary file");
+    crashPointOf(target, "created");
+    return fd;
 }
 
 // fsync of a directory makes the rename durable; some file systems refuse it (EINVAL),
@@ -46,14 +64,38 @@ bool syncDirectory(const std::filesystem::path& directory) {
     return ok;
 }
 
+// The complete temporary (already fsynced) renamed over the target, and the rename made
+// durable. Returns once the target is replaced, throws before if it is not.
+void renameIntoPlace(const std::filesystem::path& target, const std::filesystem::path& temporary,
+                     bool& renamed) {
+    if (::rename(temporary.c_str(), target.c_str()) != 0)
+        fail(target, temporary, "cannot rename into place the temporary file");
+    renamed = true;
+    crashPointOf(target, "renamed");
+    if (!syncDirectory(target.parent_path()))
+        throw Error(target.string() + ": written, but cannot fsync its directory: " + errnoText());
+}
+
+// A file written by name may have been replaced rather than rewritten in place, so it is
+// reopened by name to be synced.
+void syncByName(const std::filesystem::path& target, const std::filesystem::path& temporary) {
+    int fd = ::open(temporary.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) fail(target, temporary, "cannot reopen the temporary file");
+    if (::fsync(fd) != 0) {
+        int error = errno;
+        ::close(fd);
+        errno = error;
+        fail(target, temporary, "cannot fsync the temporary file");
+    }
+    ::close(fd);
+}
+
 }  // namespace
 
 AtomicFileWriter::AtomicFileWriter(std::filesystem::path target)
-    : target_(std::move(target)), temporary_(temporaryPathFor(target_)) {
-    fd_ = ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-    if (fd_ < 0) fail("cannot create the temporary file");
+    : target_(std::move(target)), temporary_(temporaryPathFor(target_, {})) {
+    fd_ = createTemporary(target_, temporary_);
     buffer_.reserve(kBufferBytes);
-    crashPointOf(target_, "created");
 }
 
 AtomicFileWriter::~AtomicFileWriter() {
@@ -61,16 +103,11 @@ AtomicFileWriter::~AtomicFileWriter() {
     if (!committed_) ::unlink(temporary_.c_str());
 }
 
-void AtomicFileWriter::fail(const char* what) const {
-    std::string reason = errnoText();
-    throw Error(target_.string() + ": " + what + " '" + temporary_.string() + "': " + reason);
-}
-
 void AtomicFileWriter::writeAll(std::span<const std::byte> bytes, std::uint64_t offset) {
     while (!bytes.empty()) {
         ssize_t n = ::pwrite(fd_, bytes.data(), bytes.size(), static_cast<off_t>(offset));
         if (n < 0 && errno == EINTR) continue;
-        if (n <= 0) fail("cannot write the temporary file");
+        if (n <= 0) fail(target_, temporary_, "cannot write the temporary file");
         bytes = bytes.subspan(static_cast<std::size_t>(n));
         offset += static_cast<std::uint64_t>(n);
     }
@@ -104,16 +141,11 @@ void AtomicFileWriter::overwrite(std::uint64_t offset, std::span<const std::byte
 void AtomicFileWriter::commit() {
     flush();
     crashPointOf(target_, "written");
-    if (::fsync(fd_) != 0) fail("cannot fsync the temporary file");
+    if (::fsync(fd_) != 0) fail(target_, temporary_, "cannot fsync the temporary file");
     int fd = fd_;
     fd_ = -1;
-    if (::close(fd) != 0) fail("cannot close the temporary file");
-    if (::rename(temporary_.c_str(), target_.c_str()) != 0)
-        fail("cannot rename into place the temporary file");
-    committed_ = true;
-    crashPointOf(target_, "renamed");
-    if (!syncDirectory(target_.parent_path()))
-        throw Error(target_.string() + ": written, but cannot fsync its directory: " + errnoText());
+    if (::close(fd) != 0) fail(target_, temporary_, "cannot close the temporary file");
+    renameIntoPlace(target_, temporary_, committed_);
 }
 
 void writeFileAtomically(const std::filesystem::path& path, std::string_view bytes) {
@@ -127,6 +159,26 @@ void writeFileAtomically(const std::filesystem::path& path, std::string_view byt
         std::string what = e.what();
         if (what.starts_with(prefix)) what.erase(0, prefix.size());
         throw Error(prefix + "cannot write file: " + what);
+    }
+}
+
+void writeAtomically(const std::filesystem::path& target,
+                     const std::function<void(const std::filesystem::path& temporary)>& writeTemporary) {
+    const std::filesystem::path temporary = temporaryPathFor(target, target.extension());
+    ::close(createTemporary(target, temporary));
+    bool renamed = false;
+    try {
+        try {
+            writeTemporary(temporary);
+        } catch (const std::exception& e) {
+            throw Error(target.string() + ": " + e.what());
+        }
+        crashPointOf(target, "written");
+        syncByName(target, temporary);
+        renameIntoPlace(target, temporary, renamed);
+    } catch (...) {
+        if (!renamed) ::unlink(temporary.c_str());
+        throw;
     }
 }
 

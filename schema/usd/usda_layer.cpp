@@ -86,6 +86,12 @@ const std::string& propertyName(const Property& p) {
     return std::visit([](const auto& typed) -> const std::string& { return typed.name; }, p);
 }
 
+std::string typeNames(std::span<const ValueType> types) {
+    std::string text;
+    for (ValueType t : types) text += (text.empty() ? "" : " or ") + typeName(t);
+    return text;
+}
+
 const SourceLocation& propertyLocation(const Property& p) {
     return std::visit([](const auto& typed) -> const SourceLocation& { return typed.location; }, p);
 }
@@ -103,6 +109,27 @@ const Attribute& Prim::attribute(std::string_view n) const {
         return *a;
     }
     throw UsdaError(location, "prim " + quoted(name) + " has no attribute " + quoted(n));
+}
+
+const Attribute* Prim::findValue(std::string_view n, std::span<const ValueType> accepted,
+                                 std::string_view context) const {
+    const auto property = std::find_if(properties.begin(), properties.end(),
+                                       [&](const Property& p) { return propertyName(p) == n; });
+    if (property == properties.end()) return nullptr;
+    const std::string prefix = context.empty() ? std::string() : std::string(context) + ": ";
+    const auto* a = std::get_if<Attribute>(&*property);
+    if (!a) {
+        throw UsdaError(propertyLocation(*property),
+                        prefix + quoted(n) + " is a relationship, expected an attribute of type " + usda::typeNames(accepted));
+    }
+    const auto acceptable = [&](ValueType t) { return std::find(accepted.begin(), accepted.end(), t) != accepted.end(); };
+    // A built layer could hold a value of another type than declared: both are checked.
+    const ValueType actual = !acceptable(a->type) || !a->hasValue() ? a->type : a->value->type();
+    if (!acceptable(actual)) {
+        throw UsdaError(a->location, prefix + "attribute " + quoted(n) + " has type " + usda::typeName(actual) +
+                                         ", expected " + typeNames(accepted));
+    }
+    return a->hasValue() ? a : nullptr;
 }
 
 const Relationship& Prim::relationship(std::string_view n) const {

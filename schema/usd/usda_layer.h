@@ -11,6 +11,7 @@
 #include "schema/usd/usda_value.h"
 
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -90,6 +91,8 @@ struct Relationship {
 
 using Property = std::variant<Attribute, Relationship>;
 const std::string& propertyName(const Property& p);
+// "float3 or double3".
+std::string typeNames(std::span<const ValueType> types);
 const SourceLocation& propertyLocation(const Property& p);
 
 struct Prim {
@@ -110,6 +113,30 @@ struct Prim {
     const Prim* findChild(std::string_view name) const;
     // Throwing lookups: "<where>: prim 'Asset' has no attribute 'points'".
     const Attribute& attribute(std::string_view name) const;
+
+    // Opal's one reader of typed attribute values (the bake's import, the asset layer and
+    // the scene reader all read through these).
+    // The attribute `name` when it holds a value; nullptr when the prim has no property of
+    // that name, declares the attribute without a value or blocks it (None). Throws
+    // UsdaError at the property when it is declared with none of the `accepted` types,
+    // "<context>: attribute 'points' has type float3[], expected point3f[]", or is a
+    // relationship; `context` names the prim as the caller's messages do ("Mesh </Cube>"),
+    // and an empty one leaves "<context>: " out.
+    const Attribute* findValue(std::string_view name, std::span<const ValueType> accepted,
+                               std::string_view context = {}) const;
+    // The same for one type: the value itself, nullptr when there is none.
+    template <ValueType T>
+    const StorageOf<T>* findValue(std::string_view name, std::string_view context = {}) const {
+        const ValueType accepted[] = {T};
+        const Attribute* a = findValue(name, accepted, context);
+        return a ? &std::get<StorageOf<T>>(a->value->data()) : nullptr;
+    }
+    // The value of an attribute the prim must author; throws as attribute() when it does
+    // not, and as Attribute::get otherwise.
+    template <ValueType T>
+    const StorageOf<T>& requiredValue(std::string_view name) const {
+        return attribute(name).get<T>();
+    }
     const Relationship& relationship(std::string_view name) const;
     const Prim& child(std::string_view name) const;
 

@@ -1,7 +1,9 @@
-// XXH64 against published values and against the checksum zstd itself writes into a
-// frame (the low 32 bits of XXH64 with seed 0 of the frame's content): two independent
-// truths.
+// XXH64 against published values, against the checksum zstd itself writes into a frame
+// (the low 32 bits of XXH64 with seed 0 of the frame's content), and against every
+// checksum in a sidecar written by Opal's former, hand-written XXH64 (tests/asset/legacy):
+// three independent truths.
 #include "schema/asset/xxhash64.h"
+#include "tests/asset/test_files.h"
 
 #include <gtest/gtest.h>
 #include <zstd.h>
@@ -56,6 +58,37 @@ TEST(Xxh64, AgreesWithZstdFrameChecksums) {
         EXPECT_EQ(zstdChecksum, static_cast<std::uint32_t>(xxh64(data))) << "length " << n;
     }
     ZSTD_freeCCtx(cctx);
+}
+
+// SIDECAR.md's layout, read here byte by byte rather than through the sidecar reader, so
+// that each stored checksum is compared with the library's XXH64 of exactly its bytes.
+TEST(Xxh64, VerifiesEveryChecksumOfASidecarWrittenBeforeOpalUsedTheLibrary) {
+    const std::vector<std::byte> file =
+        test::readBytes(std::filesystem::path(OPAL_SOURCE_DIR) / "tests/asset/legacy/candle.opal");
+    ASSERT_GE(file.size(), 64u);
+    const std::span<const std::byte> bytes(file);
+    EXPECT_EQ(xxh64(bytes.first(56)), test::getU64(file, 56)) << "header";
+    const std::uint64_t tableOffset = test::getU64(file, 24);
+    ASSERT_LE(tableOffset, file.size());
+    EXPECT_EQ(xxh64(bytes.subspan(tableOffset)), test::getU64(file, 40)) << "chunk table";
+    const std::size_t chunks = (file.size() - tableOffset) / 48;
+    ASSERT_GE(chunks, 5u);
+    for (std::size_t c = 0; c < chunks; ++c) {
+        const std::size_t entry = tableOffset + 48 * c;
+        const std::string tag(reinterpret_cast<const char*>(&file[entry]), 4);
+        const auto codec = std::to_integer<int>(file[entry + 4]);
+        const std::uint64_t offset = test::getU64(file, entry + 8), stored = test::getU64(file, entry + 16);
+        const std::uint64_t raw = test::getU64(file, entry + 24);
+        ASSERT_LE(offset + stored, tableOffset) << tag;
+        const std::span<const std::byte> storedBytes = bytes.subspan(offset, stored);
+        EXPECT_EQ(xxh64(storedBytes), test::getU64(file, entry + 32)) << tag << " stored bytes";
+        std::vector<std::byte> rawBytes(storedBytes.begin(), storedBytes.end());
+        if (codec == 1) {
+            rawBytes.resize(raw);
+            ASSERT_EQ(ZSTD_decompress(rawBytes.data(), raw, storedBytes.data(), stored), raw) << tag;
+        }
+        EXPECT_EQ(xxh64(rawBytes), test::getU64(file, entry + 40)) << tag << " raw bytes";
+    }
 }
 
 TEST(Xxh64, IncrementalEqualsOneShotForEverySplit) {

@@ -3,6 +3,7 @@
 // further-refined mesh, the enclosed volume by the divergence theorem, and the written
 // files read back through the schema's validating reader.
 #include "bake/bake_pipeline.h"
+#include "bake/face_orientation.h"
 
 #include "bake/mesh_validation.h"
 #include "bake/procedural_mesh.h"
@@ -92,20 +93,9 @@ std::vector<float> randomIrradiance(std::size_t n, std::uint64_t seed) {
     return e;
 }
 
-// Signed volume of a closed polygon mesh (fan triangles against the origin).
+// Signed volume of a closed polygon mesh (bake/face_orientation.h, tested on its own).
 double enclosedVolume(const RenderMesh& mesh) {
-    double volume = 0.0;
-    std::size_t start = 0;
-    for (std::int32_t n : mesh.faceVertexCounts) {
-        const Imath::V3d p0(mesh.points[std::size_t(mesh.faceVertexIndices[start])]);
-        for (std::int32_t c = 1; c + 1 < n; ++c) {
-            const Imath::V3d a(mesh.points[std::size_t(mesh.faceVertexIndices[start + std::size_t(c)])]);
-            const Imath::V3d b(mesh.points[std::size_t(mesh.faceVertexIndices[start + std::size_t(c) + 1])]);
-            volume += p0.dot(a.cross(b)) / 6.0;
-        }
-        start += std::size_t(n);
-    }
-    return volume;
+    return opal::enclosedVolume(mesh.points, mesh.faceVertexCounts, mesh.faceVertexIndices);
 }
 
 // The limit surface refined `extra` levels beyond the render mesh: its polygon area is

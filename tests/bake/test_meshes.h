@@ -3,6 +3,7 @@
 #pragma once
 
 #include "bake/control_mesh.h"
+#include "schema/asset/fan_triangulation.h"
 #include "schema/asset/translucent_asset.h"
 
 #include <Imath/ImathVec.h>
@@ -180,15 +181,10 @@ inline RenderMesh torusRenderMesh(float majorRadius, float minorRadius, int nu, 
 inline double polygonArea(const std::vector<Imath::V3f>& points, const std::vector<std::int32_t>& counts,
                           const std::vector<std::int32_t>& indices) {
     double area = 0.0;
-    std::size_t start = 0;
-    for (std::int32_t n : counts) {
-        Imath::V3d p0(points[indices[start]]);
-        for (std::int32_t c = 1; c + 1 < n; ++c) {
-            Imath::V3d a(points[indices[start + c]]), b(points[indices[start + c + 1]]);
-            area += 0.5 * (a - p0).cross(b - p0).length();
-        }
-        start += std::size_t(n);
-    }
+    forEachFanTriangle(counts, indices, [&](std::size_t, const std::array<std::int32_t, 3>& v) {
+        const Imath::V3d p0(points[std::size_t(v[0])]), a(points[std::size_t(v[1])]), b(points[std::size_t(v[2])]);
+        area += 0.5 * (a - p0).cross(b - p0).length();
+    });
     return area;
 }
 

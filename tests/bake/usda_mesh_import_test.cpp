@@ -432,7 +432,7 @@ std::vector<BadLayer> badLayers() {
         {"two-corner face", layer(meshPrim("Cube", twoCorners)),
          "</Cube>.faceVertexCounts: face 0 has 2 corners; a face needs at least 3", "int[] faceVertexCounts"},
         {"NaN point", layer(nanPoint), "non-finite number 'nan' is not accepted", "nan"},
-        {"mistyped points", layer(floatPoints), "</Cube>.points: has type float3[], expected point3f[]", "float3[]"},
+        {"mistyped points", layer(floatPoints), "</Cube>: attribute 'points' has type float3[], expected point3f[]", "float3[]"},
         {"infinite after transform",
          layer(meshPrim("Cube", cube, "    float3 xformOp:scale = (1e38, 1e38, 1e38)\n    float3 xformOp:scale:again = "
                                       "(10, 10, 10)\n    uniform token[] xformOpOrder = [\"xformOp:scale\", "
@@ -452,9 +452,9 @@ std::vector<BadLayer> badLayers() {
          "</Cube>.subdivisionScheme: 'smooth' is not one of catmullClark, loop, bilinear, none",
          "uniform token subdivisionScheme"},
         {"unsupported xformOp", layer(meshPrim("Cube", cube, "    float3 xformOp:shear = (1, 0, 0)\n" + order)),
-         "</Cube>.xformOpOrder: unsupported xformOp type 'shear'", "uniform token[] xformOpOrder"},
+         "</Cube>.xformOpOrder: lists 'xformOp:shear', which is not a supported xformOp", "uniform token[] xformOpOrder"},
         {"op listed, not authored", layer(meshPrim("Cube", cube, "    uniform token[] xformOpOrder = [\"xformOp:scale\"]\n")),
-         "</Cube>.xformOpOrder: lists 'xformOp:scale' but the prim has no such attribute", "uniform token[] xformOpOrder"},
+         "</Cube>.xformOpOrder: lists 'xformOp:scale', which the prim does not author with a value", "uniform token[] xformOpOrder"},
         {"unsupported construct", layer("def Xform \"World\" (\n    variantSets = \"look\"\n)\n{\n}\n"),
          "unsupported construct 'variantSets'", "variantSets"},
         {"references", layer("def Xform \"World\" (\n    references = @./cube.usda@\n)\n{\n}\n"),

@@ -88,6 +88,34 @@ TEST(UsdaValue, WrongTypeNamesTheLocationAndBothTypes) {
     EXPECT_EQ(errorOf([&] { sample().prim("/Missing"); }), "sample.usda: no prim at path '/Missing'");
 }
 
+TEST(UsdaValue, FindValueReadsAnAuthoredValueOfAnAcceptedType) {
+    const Prim& asset = sample().prim("/Asset");
+    const std::vector<Vec3f>* points = asset.findValue<types::Float3Array>("points");
+    ASSERT_NE(points, nullptr);
+    EXPECT_EQ(*points, (std::vector<Vec3f>{{0, 0, 0}}));
+    const ValueType eitherArray[] = {types::Point3fArray, types::Float3Array};
+    EXPECT_EQ(asset.findValue("points", eitherArray), asset.findAttribute("points"));
+    // Absent, blocked and declared-only attributes hold no value.
+    EXPECT_EQ(asset.findValue<types::Float3Array>("normals"), nullptr);
+    EXPECT_EQ(asset.findValue<types::Float>("blocked"), nullptr);
+    EXPECT_EQ(asset.findValue<types::Double>("declared"), nullptr);
+}
+
+TEST(UsdaValue, FindValueNamesTheAttributeTheTypesAndTheCallersPrim) {
+    const Prim& asset = sample().prim("/Asset");
+    EXPECT_EQ(errorOf([&] { asset.findValue<types::Point3fArray>("points"); }),
+              "sample.usda:15:5: attribute 'points' has type float3[], expected point3f[]");
+    const ValueType reals[] = {types::Float, types::Double};
+    EXPECT_EQ(errorOf([&] { asset.findValue("points", reals, "Mesh </Asset>"); }),
+              "sample.usda:15:5: Mesh </Asset>: attribute 'points' has type float3[], expected float or double");
+    // Declared with another type but without a value is still an error: the file is wrong.
+    EXPECT_EQ(errorOf([&] { asset.findValue<types::Float>("declared"); }),
+              "sample.usda:17:5: attribute 'declared' has type double, expected float");
+    EXPECT_EQ(errorOf([&] { asset.findValue<types::Token>("material:binding", "Mesh </Asset>"); }),
+              "sample.usda:18:5: Mesh </Asset>: 'material:binding' is a relationship, expected an attribute of "
+              "type token");
+}
+
 TEST(UsdaValue, TypeNamesRoundTrip) {
     for (auto scalar = static_cast<int>(ScalarType::Bool); scalar < static_cast<int>(ScalarType::Dictionary); ++scalar) {
         for (bool isArray : {false, true}) {

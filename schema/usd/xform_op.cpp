@@ -1,4 +1,4 @@
-#include "examples/scene/xform_op.h"
+#include "schema/usd/xform_op.h"
 
 #include "schema/error.h"
 
@@ -7,10 +7,10 @@
 #include <numbers>
 #include <string>
 
-namespace opal::scene {
+namespace opal::usda {
 namespace {
 
-using namespace usda::types;
+constexpr std::string_view kInvertPrefix = "!invert!";
 
 struct OpName {
     std::string_view name;
@@ -27,10 +27,10 @@ constexpr std::array<OpName, 13> OpNames = {{
     {"transform", XformOpType::Transform},
 }};
 
-constexpr std::array<usda::ValueType, 2> Vector3Types = {Float3, Double3};
-constexpr std::array<usda::ValueType, 2> ScalarTypes = {Float, Double};
-constexpr std::array<usda::ValueType, 2> QuatTypes = {Quatf, Quatd};
-constexpr std::array<usda::ValueType, 1> MatrixTypes = {Matrix4d};
+constexpr std::array<ValueType, 2> Vector3Types = {types::Float3, types::Double3};
+constexpr std::array<ValueType, 2> ScalarTypes = {types::Float, types::Double};
+constexpr std::array<ValueType, 2> QuatTypes = {types::Quatf, types::Quatd};
+constexpr std::array<ValueType, 1> MatrixTypes = {types::Matrix4d};
 
 // The axes of a three-axis rotation in the order they turn a point: rotateYXZ -> Y, X, Z.
 std::array<int, 3> eulerAxes(XformOpType type) {
@@ -45,13 +45,13 @@ std::array<int, 3> eulerAxes(XformOpType type) {
     }
 }
 
-Imath::V3d vector3(const usda::Value& value) {
-    if (const auto* f = std::get_if<usda::Vec3f>(&value.data())) return {(*f)[0], (*f)[1], (*f)[2]};
-    const auto& d = std::get<usda::Vec3d>(value.data());
+Imath::V3d vector3(const Value& value) {
+    if (const auto* f = std::get_if<Vec3f>(&value.data())) return {(*f)[0], (*f)[1], (*f)[2]};
+    const auto& d = std::get<Vec3d>(value.data());
     return {d[0], d[1], d[2]};
 }
 
-double scalar(const usda::Value& value) {
+double scalar(const Value& value) {
     if (const auto* f = std::get_if<float>(&value.data())) return *f;
     return std::get<double>(value.data());
 }
@@ -70,7 +70,15 @@ std::optional<XformOpType> parseXformOpName(std::string_view attributeName) {
     return std::nullopt;
 }
 
-std::span<const usda::ValueType> xformOpValueTypes(XformOpType type) {
+std::optional<XformOpOrderEntry> parseXformOpOrderEntry(std::string_view entry) {
+    const bool inverted = entry.starts_with(kInvertPrefix);
+    const std::string_view opName = inverted ? entry.substr(kInvertPrefix.size()) : entry;
+    const std::optional<XformOpType> type = parseXformOpName(opName);
+    if (!type) return std::nullopt;
+    return XformOpOrderEntry{opName, *type, inverted};
+}
+
+std::span<const ValueType> xformOpValueTypes(XformOpType type) {
     switch (type) {
         case XformOpType::RotateX:
         case XformOpType::RotateY:
@@ -117,7 +125,7 @@ Imath::M44d rotateEulerMatrix(XformOpType type, const Imath::V3d& degrees) {
 
 Imath::M44d orientMatrix(double w, const Imath::V3d& imaginary) {
     const double norm = std::sqrt(w * w + imaginary.length2());
-    if (!(norm > 0.0)) throw Error("orient quaternion is zero");
+    if (!(norm > 0.0)) throw Error("is a zero quaternion");
     const double r = w / norm, x = imaginary.x / norm, y = imaginary.y / norm, z = imaginary.z / norm;
     // The rotation of q v q* as a column-vector matrix, transposed for row vectors.
     Imath::M44d m;
@@ -133,7 +141,7 @@ Imath::M44d orientMatrix(double w, const Imath::V3d& imaginary) {
     return m;
 }
 
-Imath::M44d xformOpMatrix(XformOpType type, const usda::Value& value) {
+Imath::M44d xformOpMatrix(XformOpType type, const Value& value) {
     switch (type) {
         case XformOpType::Translate: return translateMatrix(vector3(value));
         case XformOpType::Scale: return scaleMatrix(vector3(value));
@@ -141,13 +149,13 @@ Imath::M44d xformOpMatrix(XformOpType type, const usda::Value& value) {
         case XformOpType::RotateY: return rotateMatrix(1, scalar(value));
         case XformOpType::RotateZ: return rotateMatrix(2, scalar(value));
         case XformOpType::Orient: {
-            if (const auto* f = std::get_if<usda::Vec4f>(&value.data()))
+            if (const auto* f = std::get_if<Vec4f>(&value.data()))
                 return orientMatrix((*f)[0], {(*f)[1], (*f)[2], (*f)[3]});
-            const auto& d = std::get<usda::Vec4d>(value.data());
+            const auto& d = std::get<Vec4d>(value.data());
             return orientMatrix(d[0], {d[1], d[2], d[3]});
         }
         case XformOpType::Transform: {
-            const auto& rows = std::get<usda::Matrix4d>(value.data());
+            const auto& rows = std::get<Matrix4d>(value.data());
             Imath::M44d m;
             for (int r = 0; r < 4; ++r)
                 for (int c = 0; c < 4; ++c) m[r][c] = rows[r][c];
@@ -157,4 +165,13 @@ Imath::M44d xformOpMatrix(XformOpType type, const usda::Value& value) {
     }
 }
 
-}  // namespace opal::scene
+Imath::M44d xformOpMatrix(const XformOpOrderEntry& entry, const Value& value) {
+    const Imath::M44d m = xformOpMatrix(entry.type, value);
+    if (!entry.inverted) return m;
+    const double determinant = m.determinant();
+    if (!(std::abs(determinant) >= 1e-300) || !std::isfinite(determinant))
+        throw Error("is singular and cannot be inverted (" + std::string(kInvertPrefix) + std::string(entry.opName) + ")");
+    return m.inverse();
+}
+
+}  // namespace opal::usda

@@ -1,7 +1,6 @@
-// xformOp composition against matrices computed by hand (row vectors, p' = p M, as USD and
-// Imath): single ops, the three-axis rotation orders, quaternions, op order, pivots,
-// !resetXformStack! and inheritance from parents.
-#include "examples/scene/xform_op.h"
+// The scene reader's xformOp composition against matrices computed by hand (row vectors,
+// p' = p M, as USD and Imath): op order, pivots, !resetXformStack! and the errors that name
+// the attribute. The ops themselves: tests/usd/xform_op_test.cpp.
 #include "examples/scene/xformable.h"
 #include "schema/usd/usda_reader.h"
 
@@ -48,48 +47,6 @@ std::string errorOf(const std::string& body) {
         return e.what();
     }
     return "no error";
-}
-
-TEST(XformOp, SingleAxisRotationsTurnCounterClockwise) {
-    // Rx(90): y -> z, z -> -y.
-    expectMatrix(rotateMatrix(0, 90.0), {{{1, 0, 0, 0}, {0, 0, 1, 0}, {0, -1, 0, 0}, {0, 0, 0, 1}}});
-    // Ry(90): z -> x, x -> -z.
-    expectMatrix(rotateMatrix(1, 90.0), {{{0, 0, -1, 0}, {0, 1, 0, 0}, {1, 0, 0, 0}, {0, 0, 0, 1}}});
-    // Rz(90): x -> y, y -> -x.
-    expectMatrix(rotateMatrix(2, 90.0), {{{0, 1, 0, 0}, {-1, 0, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}});
-    // Rz(30): x -> (cos 30, sin 30).
-    const double c = std::sqrt(3.0) / 2.0, s = 0.5;
-    expectMatrix(rotateMatrix(2, 30.0), {{{c, s, 0, 0}, {-s, c, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}});
-}
-
-TEST(XformOp, ThreeAxisRotationsApplyTheirAxesInNameOrder) {
-    // rotateXYZ (90, 0, 90): X first, then Z. x -> x -> y; y -> z -> z; z -> -y -> x.
-    expectMatrix(rotateEulerMatrix(XformOpType::RotateXYZ, {90, 0, 90}),
-                 {{{0, 1, 0, 0}, {0, 0, 1, 0}, {1, 0, 0, 0}, {0, 0, 0, 1}}});
-    // rotateZYX (90, 0, 90): Z first, then X. x -> y -> z; y -> -x -> -x; z -> z -> -y.
-    expectMatrix(rotateEulerMatrix(XformOpType::RotateZYX, {90, 0, 90}),
-                 {{{0, 0, 1, 0}, {-1, 0, 0, 0}, {0, -1, 0, 0}, {0, 0, 0, 1}}});
-    // rotateYXZ (90, 90, 0): Y first, then X. x -> -z -> y; y -> y -> z; z -> x -> x.
-    expectMatrix(rotateEulerMatrix(XformOpType::RotateYXZ, {90, 90, 0}),
-                 {{{0, 1, 0, 0}, {0, 0, 1, 0}, {1, 0, 0, 0}, {0, 0, 0, 1}}});
-}
-
-TEST(XformOp, OrientIsTheQuaternionsRotation) {
-    // 90 degrees about +Y: q = (cos 45, 0, sin 45, 0): z -> x, x -> -z.
-    const double h = std::sqrt(0.5);
-    expectMatrix(orientMatrix(h, {0, h, 0}), {{{0, 0, -1, 0}, {0, 1, 0, 0}, {1, 0, 0, 0}, {0, 0, 0, 1}}});
-    // Not normalized: the same rotation.
-    expectMatrix(orientMatrix(2 * h, {0, 2 * h, 0}), {{{0, 0, -1, 0}, {0, 1, 0, 0}, {1, 0, 0, 0}, {0, 0, 0, 1}}});
-    EXPECT_THROW(orientMatrix(0, {0, 0, 0}), Error);
-}
-
-TEST(XformOp, OpNamesMayCarrySuffixes) {
-    EXPECT_EQ(parseXformOpName("xformOp:rotateXYZ"), XformOpType::RotateXYZ);
-    EXPECT_EQ(parseXformOpName("xformOp:translate:pivot"), XformOpType::Translate);
-    EXPECT_EQ(parseXformOpName("xformOp:rotateX:orientToStageUpAxis"), XformOpType::RotateX);
-    EXPECT_EQ(parseXformOpName("xformOp:shear"), std::nullopt);
-    EXPECT_EQ(parseXformOpName("xformOp:translate:"), std::nullopt);
-    EXPECT_EQ(parseXformOpName("translate"), std::nullopt);
 }
 
 TEST(Xformable, OrderListsOpsOutermostFirst) {
