@@ -1,6 +1,7 @@
 #include "delegate/render_delegate.h"
 
 #include "delegate/camera.h"
+#include "delegate/commit_steps.h"
 #include "delegate/image/camera_view.h"
 #include "delegate/hd/render_index.h"
 #include "delegate/light.h"
@@ -22,34 +23,6 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
 }
 
 int saturated(std::uint64_t n) { return n > std::uint64_t(INT_MAX) ? INT_MAX : int(n); }
-
-const std::vector<hd::Token>& lightTypes() {
-    static const std::vector<hd::Token> types = {hd::PrimType::SphereLight, hd::PrimType::DistantLight,
-                                                 hd::PrimType::DomeLight};
-    return types;
-}
-
-BoundMaterial resolveMaterial(const TranslucentMesh& mesh, const std::map<hd::SdfPath, const OpalMaterial*>& materials) {
-    BoundMaterial bound;
-    const hd::SdfPath& path = mesh.desc().material;
-    if (path.empty()) {
-        bound.subsurface = mesh.desc().asset->defaultMaterial;
-        const hd::MaterialDesc defaults;
-        bound.specular = defaults.specular;
-        bound.roughness = defaults.specularRoughness;
-        return bound;
-    }
-    const auto it = materials.find(path);
-    if (it == materials.end())
-        throw Error("translucent mesh '" + mesh.id() + "': its material '" + path +
-                    "' is not a material prim of the render index");
-    bound.path = path;
-    bound.version = it->second->version();
-    bound.subsurface = it->second->desc().subsurface;
-    bound.specular = it->second->desc().specular;
-    bound.roughness = it->second->desc().specularRoughness;
-    return bound;
-}
 
 }  // namespace
 
@@ -288,92 +261,36 @@ void OpalRenderDelegate::commitResources(hd::RenderIndex& index) {
         frame_.reset();
         committedMeshes_.clear();
     }
-    if (settings_.ocioConfig != texturesConfig_) {
-        textures_.reset(settings_.ocioConfig);
-        texturesConfig_ = settings_.ocioConfig;
-        for (const hd::Token& type : lightTypes())
-            index.forEachSprim(type, [](hd::Sprim& s) {
-                if (auto* light = dynamic_cast<OpalLight*>(&s)) light->reloadTexture();
-            });
-    }
+    if (settings_.ocioConfig != texturesConfig_) reloadDomeTextures(index);
 
-    // Lights (a sync that failed leaves version 0: such a light is not there yet).
-    LightSources lights;
     auto frame = std::make_shared<Frame>();
-    for (const hd::Token& type : lightTypes())
-        index.forEachSprim(type, [&](hd::Sprim& s) {
-            const auto* light = dynamic_cast<const OpalLight*>(&s);
-            if (!light || light->version() == 0) return;
-            LightSource source{light->version(), nullptr, nullptr};
-            if (light->isDome()) {
-                source.environment = light->environment();
-                frame->domes.push_back(
-                    {light->domeMap(), light->domeFromWorld(), light->domeScale(), light->desc().visibleToCamera});
-            } else {
-                source.analytic = &*light->analytic();
-                frame->lights.push_back(*light->analytic());
-            }
-            lights.emplace(light->id(), std::move(source));
-        });
-    std::map<hd::SdfPath, const OpalMaterial*> materials;
-    index.forEachSprim(hd::PrimType::Material, [&](hd::Sprim& s) {
-        if (const auto* material = dynamic_cast<const OpalMaterial*>(&s)) materials.emplace(material->id(), material);
-    });
-    std::vector<TranslucentMesh*> meshes;
-    index.forEachRprim([&](hd::Rprim& r) {
-        if (auto* mesh = dynamic_cast<TranslucentMesh*>(&r)) meshes.push_back(mesh);
-    });
-
-    // The Embree scene: rebuilt when any mesh was added, removed, moved, shown or hidden.
-    bool rebuild = !frame_ || meshes.size() != committedMeshes_.size();
-    for (std::size_t i = 0; i < meshes.size() && !rebuild; ++i)
-        rebuild = meshes[i] != committedMeshes_[i] || meshes[i]->geometryChanged();
-    std::shared_ptr<const RayScene> rays = frame_ ? frame_->rays : nullptr;
-    if (rebuild) {
-        const auto built = std::chrono::steady_clock::now();
-        auto scene = std::make_shared<RayScene>();
-        for (const TranslucentMesh* mesh : meshes) {
-            if (!mesh->visible()) continue;
-            try {
-                scene->addMesh(mesh->desc().asset->mesh, mesh->desc().transform);
-            } catch (const Error& e) {
-                throw Error("translucent mesh '" + mesh->id() + "': " + e.what());
-            }
-        }
-        scene->commit();
-        rays = std::move(scene);
-        ++stats.rayScenes;
-        stats.rayScenesMs = millisecondsSince(built);
-    }
-    frame->rays = rays;
-
-    // Each mesh: its lights' E, its material, its radiance (only what changed).
-    std::vector<hd::SdfPath> paths;
-    for (std::size_t i = 0; i < meshes.size(); ++i) {
-        TranslucentMesh& mesh = *meshes[i];
-        paths.push_back(mesh.id());
-        if (!mesh.visible()) {
-            mesh.hide();
-            continue;
-        }
-        const BoundMaterial material = resolveMaterial(mesh, materials);
-        mesh.updateIrradiance(lights, *rays, rebuild, stats);
-        mesh.updateMaterial(material, stats, warnings_);
-        mesh.updateRadiance(settings_.reference, int(i), stats);
-        frame->meshes.push_back(mesh.shading());
-    }
+    const LightSources lights = collectLights(index, *frame);
+    const MaterialPrims materials = collectMaterials(index);
+    const std::vector<TranslucentMesh*> meshes = collectMeshes(index);
+    const bool rebuild = !frame_ || geometryChanged(meshes, committedMeshes_);
+    frame->rays = rebuild ? buildRayScene(meshes, stats) : frame_->rays;
+    relightMeshes(meshes, lights, materials, {settings_.reference, rebuild}, *frame, stats, warnings_);
 
     for (TranslucentMesh* mesh : meshes) mesh->markCommitted();
     committedMeshes_.assign(meshes.begin(), meshes.end());
-    meshPaths_ = std::move(paths);
+    meshPaths_.clear();
     meshMemory_.clear();
-    for (const TranslucentMesh* mesh : meshes) meshMemory_.emplace_back(mesh->id(), mesh->memoryBytes());
+    for (const TranslucentMesh* mesh : meshes) {
+        meshPaths_.push_back(mesh->id());
+        meshMemory_.emplace_back(mesh->id(), mesh->memoryBytes());
+    }
     committedSettingsVersion_ = settingsVersion_;
     publish(std::move(frame));
     stats.totalMs = millisecondsSince(start);
     lastCommit_ = stats;
     totals_ += stats;
     ++commits_;
+}
+
+void OpalRenderDelegate::reloadDomeTextures(hd::RenderIndex& index) {
+    textures_.reset(settings_.ocioConfig);
+    texturesConfig_ = settings_.ocioConfig;
+    for (OpalLight* light : collectLightPrims(index)) light->reloadTexture();
 }
 
 }  // namespace opal

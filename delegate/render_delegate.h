@@ -95,6 +95,7 @@ public:
     int passesDone() const { return passesDone_.load(); }
 
 private:
+    void reloadDomeTextures(hd::RenderIndex& index);  // after opal:ocioConfig changed
     void renderJob();  // the render thread's callback
     void restart(RenderJob job);
     void publish(std::shared_ptr<const Frame> frame);

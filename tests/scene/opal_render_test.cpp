@@ -122,6 +122,46 @@ TEST(OpalRender, WritesALitMultiLayerExrAndAPreview) {
     EXPECT_FLOAT_EQ(value(0, 0, "A"), 0.0f);
     EXPECT_FLOAT_EQ(value(0, 0, "primId.id"), -1.0f);
     EXPECT_TRUE(std::filesystem::is_regular_file(dir / "out.png"));
+    // Anti-aliased: the sphere's silhouette has fractional alpha, and colour is premultiplied
+    // by it (the header says so).
+    int fractional = 0;
+    for (int y = 0; y < spec.height; ++y)
+        for (int x = 0; x < spec.width; ++x) {
+            const float alpha = value(x, y, "A");
+            if (alpha > 0.0f && alpha < 1.0f) ++fractional;
+            if (alpha == 0.0f) {
+                EXPECT_EQ(value(x, y, "R"), 0.0f);
+            }
+        }
+    EXPECT_GT(fractional, 10);
+    EXPECT_NE(spec.get_string_attribute("opal/alpha").find("premultiplied"), std::string::npos);
+}
+
+// Each row of the AOV table (hd/aov.h) is an --aov choice, written as the row says: its
+// EXR channels and pixel type. Nothing here names an AOV.
+TEST(OpalRender, EveryAovOfTheTableIsWrittenAsItsRowSays) {
+    const test::SceneDir dir;
+    dir.writeSphereAsset("sphere");
+    dir.write("scene.usda", litScene("2000"));
+    for (const hd::AovDescriptor& aov : hd::aovTable()) {
+        const std::filesystem::path exr = dir / (aov.name + ".exr");
+        const ProcessResult run = runOpalRender(
+            dir, "'" + (dir / "scene.usda").string() + "' -o '" + exr.string() + "' --aov " + aov.name);
+        ASSERT_EQ(run.exitCode, 0) << aov.name << ": " << run.err;
+        auto in = OIIO::ImageInput::open(exr.string());
+        ASSERT_TRUE(in) << OIIO::geterror();
+        const OIIO::ImageSpec& spec = in->spec();
+        ASSERT_EQ(spec.nchannels, aov.channelCount()) << aov.name;
+        for (int c = 0; c < spec.nchannels; ++c) {
+            std::string expected(aov.channels[c]);
+            if (!aov.exrLayer.empty()) expected.insert(0, std::string(aov.exrLayer) + ".");
+            EXPECT_NE(std::find(spec.channelnames.begin(), spec.channelnames.end(), expected), spec.channelnames.end())
+                << aov.name << " has no channel " << expected;
+            const OIIO::TypeDesc type = spec.channelformat(c);
+            EXPECT_EQ(type, aov.format == hd::AovFormat::Float32 ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::HALF)
+                << aov.name;
+        }
+    }
 }
 
 // The shipped demo scene on a candle baked here with small counts (512 samples, level 1,

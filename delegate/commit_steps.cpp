@@ -1,0 +1,129 @@
+#include "delegate/commit_steps.h"
+
+#include "schema/error.h"
+
+#include <chrono>
+
+namespace opal {
+
+namespace {
+
+// The prims of `types` that are T (the delegate made them: anything else is skipped).
+template <typename T>
+std::vector<T*> sprimsOf(const hd::RenderIndex& index, const std::vector<hd::Token>& types) {
+    std::vector<T*> prims;
+    for (const hd::Token& type : types)
+        index.forEachSprim(type, [&](hd::Sprim& s) {
+            if (auto* prim = dynamic_cast<T*>(&s)) prims.push_back(prim);
+        });
+    return prims;
+}
+
+BoundMaterial resolveMaterial(const TranslucentMesh& mesh, const MaterialPrims& materials) {
+    BoundMaterial bound;
+    const hd::SdfPath& path = mesh.desc().material;
+    if (path.empty()) {
+        bound.subsurface = mesh.desc().asset->defaultMaterial;
+        const hd::MaterialDesc defaults;
+        bound.specular = defaults.specular;
+        bound.roughness = defaults.specularRoughness;
+        return bound;
+    }
+    const auto it = materials.find(path);
+    if (it == materials.end())
+        throw Error("translucent mesh '" + mesh.id() + "': its material '" + path +
+                    "' is not a material prim of the render index");
+    bound.path = path;
+    bound.version = it->second->version();
+    bound.subsurface = it->second->desc().subsurface;
+    bound.specular = it->second->desc().specular;
+    bound.roughness = it->second->desc().specularRoughness;
+    return bound;
+}
+
+
+}  // namespace
+
+const std::vector<hd::Token>& lightTypes() {
+    static const std::vector<hd::Token> types = {hd::PrimType::SphereLight, hd::PrimType::DistantLight,
+                                                 hd::PrimType::DomeLight};
+    return types;
+}
+
+std::vector<OpalLight*> collectLightPrims(const hd::RenderIndex& index) { return sprimsOf<OpalLight>(index, lightTypes()); }
+
+LightSources collectLights(const hd::RenderIndex& index, Frame& frame) {
+    LightSources lights;
+    for (const OpalLight* light : collectLightPrims(index)) {
+        if (light->version() == 0) continue;
+        LightSource source{light->version(), nullptr, nullptr};
+        if (light->isDome()) {
+            source.environment = light->environment();
+            frame.domes.push_back(
+                {light->domeMap(), light->domeFromWorld(), light->domeScale(), light->desc().visibleToCamera});
+        } else {
+            source.analytic = &*light->analytic();
+            frame.lights.push_back(*light->analytic());
+        }
+        lights.emplace(light->id(), std::move(source));
+    }
+    return lights;
+}
+
+MaterialPrims collectMaterials(const hd::RenderIndex& index) {
+    MaterialPrims materials;
+    for (const OpalMaterial* material : sprimsOf<const OpalMaterial>(index, {hd::PrimType::Material}))
+        materials.emplace(material->id(), material);
+    return materials;
+}
+
+std::vector<TranslucentMesh*> collectMeshes(const hd::RenderIndex& index) {
+    std::vector<TranslucentMesh*> meshes;
+    index.forEachRprim([&](hd::Rprim& r) {
+        if (auto* mesh = dynamic_cast<TranslucentMesh*>(&r)) meshes.push_back(mesh);
+    });
+    return meshes;
+}
+
+bool geometryChanged(const std::vector<TranslucentMesh*>& meshes, const std::vector<const hd::Rprim*>& committed) {
+    if (meshes.size() != committed.size()) return true;
+    for (std::size_t i = 0; i < meshes.size(); ++i)
+        if (meshes[i] != committed[i] || meshes[i]->geometryChanged()) return true;
+    return false;
+}
+
+std::shared_ptr<const RayScene> buildRayScene(const std::vector<TranslucentMesh*>& meshes, CommitStats& stats) {
+    const auto start = std::chrono::steady_clock::now();
+    auto scene = std::make_shared<RayScene>();
+    for (const TranslucentMesh* mesh : meshes) {
+        if (!mesh->visible()) continue;
+        try {
+            scene->addMesh(mesh->desc().asset->mesh, mesh->desc().transform);
+        } catch (const Error& e) {
+            throw Error("translucent mesh '" + mesh->id() + "': " + e.what());
+        }
+    }
+    scene->commit();
+    ++stats.rayScenes;
+    stats.rayScenesMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return scene;
+}
+
+void relightMeshes(const std::vector<TranslucentMesh*>& meshes, const LightSources& lights,
+                   const MaterialPrims& materials, RelightOptions options, Frame& frame, CommitStats& stats,
+                   std::vector<std::string>& warnings) {
+    for (std::size_t i = 0; i < meshes.size(); ++i) {
+        TranslucentMesh& mesh = *meshes[i];
+        if (!mesh.visible()) {
+            mesh.hide();
+            continue;
+        }
+        const BoundMaterial material = resolveMaterial(mesh, materials);
+        mesh.updateIrradiance(lights, *frame.rays, options.raysRebuilt, stats);
+        mesh.updateMaterial(material, stats, warnings);
+        mesh.updateRadiance(options.reference, int(i), stats);
+        frame.meshes.push_back(mesh.shading());
+    }
+}
+
+}  // namespace opal
