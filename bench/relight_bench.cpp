@@ -289,7 +289,27 @@ std::vector<CaseResult> frameCases(Session& s, int repeats, FrameOutput& output)
         if (bindings[i].aov == "primId") output.coverage = coverage(b);
         if (bindings[i].aov == "color") output.color.emplace(b.width(), b.height(), b.channels(), b.data());
     }
-    return {first, converge};
+
+    // What a viewer shows after the artist drags the key light: the sync relights, the
+    // commit restarts the frame on the render thread, the first pass lands.
+    CaseResult moved = newCase("light_frame", "point light moved -> sync -> first pass of the new frame",
+                               kLightMs + kFrameMs);
+    moved.breakdown = {{"sync", {}}, {"first_pass", {}}};
+    for (int i = 0; i <= repeats; ++i) {
+        const auto start = std::chrono::steady_clock::now();
+        s.scene.moveKeyLight(s.index, i + 1);
+        s.index.sync();
+        const double syncMs = millisecondsSince(start);
+        pass->execute(state, bindings);
+        waitForPasses(s.delegate, 1);
+        const double totalMs = millisecondsSince(start);
+        waitForPasses(s.delegate, std::numeric_limits<int>::max());  // the next move starts from rest
+        if (i == 0) continue;
+        moved.times.ms.push_back(totalMs);
+        moved.breakdown[0].second.ms.push_back(syncMs);
+        moved.breakdown[1].second.ms.push_back(totalMs - syncMs);
+    }
+    return {first, converge, moved};
 }
 
 void announce(const char* what) {
@@ -301,7 +321,7 @@ void announce(const char* what) {
 void runReference(Session& s, const std::shared_ptr<const TranslucentAsset>& asset,
                   const std::shared_ptr<const LatLongMap>& domeMap, int repeats, std::size_t outputs,
                   std::vector<CaseResult>& cases) {
-    const bool needed = std::any_of(cases.begin(), cases.end(), [](const CaseResult& c) { return c.name != "frame" && c.name != "converge"; });
+    const bool needed = std::any_of(cases.begin(), cases.end(), [](const CaseResult& c) { return c.name != "frame" && c.name != "converge" && c.name != "light_frame"; });
     std::optional<RelightReference> reference;
     if (needed) {
         reference.emplace(s.scene, asset, domeMap, s.scene.material(RelightScene::MaterialPath).subsurface, outputs);
@@ -312,7 +332,7 @@ void runReference(Session& s, const std::shared_ptr<const TranslucentAsset>& ass
         announce(line);
     }
     for (CaseResult& c : cases) {
-        if (c.name == "frame" || c.name == "converge") {
+        if (c.name == "frame" || c.name == "converge" || c.name == "light_frame") {
             c.referenceNote = "n/a: opal:reference forms the image with the same renderer; only the per-vertex "
                               "radiance differs, which the edit cases time";
             continue;

@@ -203,9 +203,15 @@ void OpalRenderDelegate::restart(RenderJob job) {
     {
         std::lock_guard lock(jobMutex_);
         job_ = std::move(job);
-        converged_ = false;
+        newJob();
     }
     thread_.startRender();
+}
+
+void OpalRenderDelegate::newJob() {
+    ++jobGeneration_;
+    passesDone_ = 0;
+    converged_ = false;
 }
 
 // A new commit while a job renders: it restarts with the new frame at its next tile.
@@ -214,7 +220,7 @@ void OpalRenderDelegate::publish(std::shared_ptr<const Frame> frame) {
     std::lock_guard lock(jobMutex_);
     if (!job_) return;
     job_->frame = frame_;
-    converged_ = false;
+    newJob();
     for (hd::RenderBuffer* buffer : job_->targets)
         if (buffer) buffer->setConverged(false);
     thread_.startRender();
@@ -222,15 +228,16 @@ void OpalRenderDelegate::publish(std::shared_ptr<const Frame> frame) {
 
 void OpalRenderDelegate::renderJob() {
     RenderJob job;
+    std::uint64_t generation = 0;
     {
         std::lock_guard lock(jobMutex_);
         if (!job_ || !job_->frame) return;
         job = *job_;
+        generation = jobGeneration_;
         jobStart_ = std::chrono::steady_clock::now();
+        passCount_ = passCount(job.options);
     }
     const int passes = passCount(job.options);
-    passCount_ = passes;
-    passesDone_ = 0;
     try {
         const CameraView camera(job.camera, job.width, job.height, job.cameraPath);
         for (int pass = 0; pass < passes; ++pass) {
@@ -238,6 +245,8 @@ void OpalRenderDelegate::renderJob() {
             const auto start = std::chrono::steady_clock::now();
             if (!renderPass(*job.frame, camera, job.options, job.targets, pass, [this] { return thread_.checkpoint(); }))
                 return;
+            std::lock_guard lock(jobMutex_);
+            if (generation != jobGeneration_) return;  // a pass of a job already replaced
             lastPassMs_ = millisecondsSince(start);
             ++passesDone_;
         }
@@ -246,7 +255,7 @@ void OpalRenderDelegate::renderJob() {
         renderErrors_.push_back(std::string("Opal render thread: ") + e.what());
     }
     std::lock_guard lock(jobMutex_);
-    if (thread_.stopRequested()) return;  // restarted meanwhile: the new job is not converged
+    if (generation != jobGeneration_ || thread_.stopRequested()) return;  // replaced meanwhile
     for (hd::RenderBuffer* buffer : job.targets)
         if (buffer) buffer->setConverged(true);
     convergedMs_ = millisecondsSince(jobStart_);

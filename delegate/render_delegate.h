@@ -99,6 +99,7 @@ private:
     void renderJob();  // the render thread's callback
     void restart(RenderJob job);
     void publish(std::shared_ptr<const Frame> frame);
+    void newJob();  // under jobMutex_: progress starts again
     std::shared_ptr<const Frame> frame(hd::RenderIndex& index);
 
     RenderSettings settings_;
@@ -122,6 +123,7 @@ private:
     std::optional<RenderJob> job_;
     std::vector<std::string> renderErrors_;
     std::chrono::steady_clock::time_point jobStart_;
+    std::uint64_t jobGeneration_ = 0;  // one per job (a restart is a new job)
     std::atomic<int> passesDone_{0}, passCount_{0};
     std::atomic<double> lastPassMs_{0.0}, convergedMs_{0.0};
     std::atomic<bool> converged_{false};
