@@ -303,24 +303,31 @@ void shadeBlock(const FrameContext& context, Block& block) {
     if (specular) shadeSpecular(context, block);
 }
 
-// One AOV's values at a shaded sample (hd::aovTable's channels).
-const float* aovValues(const Pixel& p, hd::AovId aov, std::array<float, 4>& scratch) {
+// n floats; a fixed count, so that the compiler writes them in place (std::copy_n of a few
+// floats becomes a call to memmove).
+template <int N>
+void put(float* out, const float* values) {
+    for (int c = 0; c < N; ++c) out[c] = values[c];
+}
+
+// One AOV's values at a shaded sample, in hd::aovTable's channels.
+void putAov(hd::AovId aov, const Pixel& p, float* out) {
     using enum hd::AovId;
     switch (aov) {
         case Color: {
             const Imath::V3f c = p.hit ? p.subsurface + p.specular : p.background;
-            scratch = {c.x, c.y, c.z, p.alpha};
-            return scratch.data();
+            const float rgba[4] = {c.x, c.y, c.z, p.alpha};
+            put<4>(out, rgba);
+            return;
         }
-        case Subsurface: return &p.subsurface.x;
-        case Specular: return &p.specular.x;
-        case Irradiance: return &p.irradiance.x;
-        case Normal: return &p.normal.x;
-        case Depth: return &p.depth;
-        case PrimId: return &p.primId;
-        case Alpha: return &p.alpha;
+        case Subsurface: put<3>(out, &p.subsurface.x); return;
+        case Specular: put<3>(out, &p.specular.x); return;
+        case Irradiance: put<3>(out, &p.irradiance.x); return;
+        case Normal: put<3>(out, &p.normal.x); return;
+        case Depth: put<1>(out, &p.depth); return;
+        case PrimId: put<1>(out, &p.primId); return;
+        case Alpha: put<1>(out, &p.alpha); return;
     }
-    return nullptr;
 }
 
 // A tile's AOVs, shaded into cache and then written to the frame's buffers row by row, the
@@ -334,20 +341,16 @@ public:
     TileAovs(const AovTargets& frame, int pass, int tileWidth, int tileHeight)
         : frame_(frame), pass_(pass), tileWidth_(tileWidth) {
         const std::size_t pixels = std::size_t(tileWidth) * tileHeight;
-        for (std::size_t a = 0; a < hd::kAovCount; ++a)
-            if (written(a)) storage_[a].assign(pixels * std::size_t(channels(a)), 0.0f);
+        for (std::size_t a = 0; a < hd::kAovCount; ++a) {
+            if (!written(a)) continue;
+            storage_[a].assign(pixels * std::size_t(channels(a)), 0.0f);
+            written_.push_back({hd::AovId(a), std::size_t(channels(a)), storage_[a].data()});
+        }
     }
 
     // The sample of tile pixel `index` ((y - y0) tileWidth + (x - x0)).
     void set(std::size_t index, const Pixel& pixel) {
-        std::array<float, 4> scratch;
-        for (std::size_t a = 0; a < hd::kAovCount; ++a) {
-            if (storage_[a].empty()) continue;
-            const int c = channels(a);
-            const float* values = aovValues(pixel, hd::AovId(a), scratch);
-            float* out = storage_[a].data() + index * std::size_t(c);
-            for (int k = 0; k < c; ++k) out[k] = values[k];
-        }
+        for (const Written& w : written_) putAov(w.id, pixel, w.storage + index * w.channels);
     }
 
     // Rows [y0, y1) x columns [x0, x1) of the tile into the frame; `blend` = w_p / W_p.
@@ -389,10 +392,16 @@ private:
         for (; i < n; ++i) to[i] = from[i];
     }
 
+    struct Written {
+        hd::AovId id;
+        std::size_t channels;
+        float* storage;
+    };
     const AovTargets& frame_;
     int pass_;
     int tileWidth_;
     std::array<std::vector<float>, hd::kAovCount> storage_;
+    std::vector<Written> written_;  // the AOVs this pass writes
 };
 
 // Debug builds check what a pass wrote: every radiometric AOV finite (light_emission.h keeps
