@@ -303,30 +303,52 @@ void shadeBlock(const FrameContext& context, Block& block) {
     if (specular) shadeSpecular(context, block);
 }
 
-// n floats; a fixed count, so that the compiler writes them in place (std::copy_n of a few
-// floats becomes a call to memmove).
-template <int N>
-void put(float* out, const float* values) {
-    for (int c = 0; c < N; ++c) out[c] = values[c];
+// One AOV's values at a shaded sample, in hd::aovTable's channels: a fixed count, so that
+// the compiler writes them in place.
+template <hd::AovId A>
+void putAov(const Pixel& p, float* out) {
+    using enum hd::AovId;
+    const auto put = [out](auto... values) {
+        int c = 0;
+        ((out[c++] = values), ...);
+    };
+    if constexpr (A == Color) {
+        const Imath::V3f c = p.hit ? p.subsurface + p.specular : p.background;
+        put(c.x, c.y, c.z, p.alpha);
+    } else if constexpr (A == Subsurface) {
+        put(p.subsurface.x, p.subsurface.y, p.subsurface.z);
+    } else if constexpr (A == Specular) {
+        put(p.specular.x, p.specular.y, p.specular.z);
+    } else if constexpr (A == Irradiance) {
+        put(p.irradiance.x, p.irradiance.y, p.irradiance.z);
+    } else if constexpr (A == Normal) {
+        put(p.normal.x, p.normal.y, p.normal.z);
+    } else if constexpr (A == Depth) {
+        put(p.depth);
+    } else if constexpr (A == PrimId) {
+        put(p.primId);
+    } else {
+        put(p.alpha);
+    }
 }
 
-// One AOV's values at a shaded sample, in hd::aovTable's channels.
-void putAov(hd::AovId aov, const Pixel& p, float* out) {
+// n pixels' values of AOV `a` (channels c each) into out: the switch once per row.
+template <hd::AovId A>
+void putRow(const Pixel* pixels, std::size_t n, std::size_t c, float* out) {
+    for (std::size_t i = 0; i < n; ++i) putAov<A>(pixels[i], out + i * c);
+}
+
+void putRow(hd::AovId aov, const Pixel* pixels, std::size_t n, std::size_t c, float* out) {
     using enum hd::AovId;
     switch (aov) {
-        case Color: {
-            const Imath::V3f c = p.hit ? p.subsurface + p.specular : p.background;
-            const float rgba[4] = {c.x, c.y, c.z, p.alpha};
-            put<4>(out, rgba);
-            return;
-        }
-        case Subsurface: put<3>(out, &p.subsurface.x); return;
-        case Specular: put<3>(out, &p.specular.x); return;
-        case Irradiance: put<3>(out, &p.irradiance.x); return;
-        case Normal: put<3>(out, &p.normal.x); return;
-        case Depth: put<1>(out, &p.depth); return;
-        case PrimId: put<1>(out, &p.primId); return;
-        case Alpha: put<1>(out, &p.alpha); return;
+        case Color: return putRow<Color>(pixels, n, c, out);
+        case Subsurface: return putRow<Subsurface>(pixels, n, c, out);
+        case Specular: return putRow<Specular>(pixels, n, c, out);
+        case Irradiance: return putRow<Irradiance>(pixels, n, c, out);
+        case Normal: return putRow<Normal>(pixels, n, c, out);
+        case Depth: return putRow<Depth>(pixels, n, c, out);
+        case PrimId: return putRow<PrimId>(pixels, n, c, out);
+        case Alpha: return putRow<Alpha>(pixels, n, c, out);
     }
 }
 
@@ -339,34 +361,28 @@ void putAov(hd::AovId aov, const Pixel& p, float* out) {
 class TileAovs {
 public:
     TileAovs(const AovTargets& frame, int pass, int tileWidth, int tileHeight)
-        : frame_(frame), pass_(pass), tileWidth_(tileWidth) {
-        const std::size_t pixels = std::size_t(tileWidth) * tileHeight;
-        for (std::size_t a = 0; a < hd::kAovCount; ++a) {
-            if (!written(a)) continue;
-            storage_[a].assign(pixels * std::size_t(channels(a)), 0.0f);
-            written_.push_back({hd::AovId(a), std::size_t(channels(a)), storage_[a].data()});
-        }
-    }
+        : frame_(frame), pass_(pass), tileWidth_(tileWidth), pixels_(std::size_t(tileWidth) * tileHeight),
+          row_(std::size_t(tileWidth) * 4) {}
 
-    // The sample of tile pixel `index` ((y - y0) tileWidth + (x - x0)).
-    void set(std::size_t index, const Pixel& pixel) {
-        for (const Written& w : written_) putAov(w.id, pixel, w.storage + index * w.channels);
-    }
+    // Tile pixel `index` ((y - y0) tileWidth + (x - x0)): shade into it.
+    Pixel& pixel(std::size_t index) { return pixels_[index]; }
 
     // Rows [y0, y1) x columns [x0, x1) of the tile into the frame; `blend` = w_p / W_p.
-    void flush(int x0, int y0, int x1, int y1, float blend) const {
+    // Pass 0 writes every bound AOV, later passes the filtered ones.
+    void flush(int x0, int y0, int x1, int y1, float blend) {
         for (std::size_t a = 0; a < hd::kAovCount; ++a) {
-            if (storage_[a].empty()) continue;
+            const hd::AovDescriptor& aov = hd::aovDescriptor(hd::AovId(a));
+            if (!frame_[a] || (pass_ > 0 && aov.sampling != hd::AovSampling::Filtered)) continue;
             hd::RenderBuffer& buffer = *frame_[a];
-            const std::size_t c = std::size_t(channels(a)), count = std::size_t(x1 - x0) * c;
+            const std::size_t c = std::size_t(aov.channelCount()), n = std::size_t(x1 - x0);
             buffer.writeTiles([&](float* target) {
                 for (int y = y0; y < y1; ++y) {
-                    const float* from = storage_[a].data() + std::size_t(y - y0) * tileWidth_ * c;
+                    putRow(hd::AovId(a), pixels_.data() + std::size_t(y - y0) * tileWidth_, n, c, row_.data());
                     float* to = target + (std::size_t(y) * buffer.width() + x0) * c;
                     if (pass_ == 0 || blend == 1.0f)
-                        streamCopy(from, to, count);
+                        streamCopy(row_.data(), to, n * c);
                     else
-                        for (std::size_t i = 0; i < count; ++i) to[i] += blend * (from[i] - to[i]);
+                        for (std::size_t i = 0; i < n * c; ++i) to[i] += blend * (row_[i] - to[i]);
                 }
 #if OPAL_STREAMING_STORES
                 _mm_sfence();  // the streamed rows are visible before the lock is released
@@ -376,12 +392,6 @@ public:
     }
 
 private:
-    static int channels(std::size_t a) { return hd::aovDescriptor(hd::AovId(a)).channelCount(); }
-    // Pass 0 writes every bound AOV, later passes the filtered ones.
-    bool written(std::size_t a) const {
-        return frame_[a] && (pass_ == 0 || hd::aovDescriptor(hd::AovId(a)).sampling == hd::AovSampling::Filtered);
-    }
-
     // to[0, n) = from[0, n): plain stores up to a 16-byte boundary, then 4 floats a store.
     static void streamCopy(const float* from, float* to, std::size_t n) {
         std::size_t i = 0;
@@ -392,16 +402,11 @@ private:
         for (; i < n; ++i) to[i] = from[i];
     }
 
-    struct Written {
-        hd::AovId id;
-        std::size_t channels;
-        float* storage;
-    };
     const AovTargets& frame_;
     int pass_;
     int tileWidth_;
-    std::array<std::vector<float>, hd::kAovCount> storage_;
-    std::vector<Written> written_;  // the AOVs this pass writes
+    std::vector<Pixel> pixels_;  // the tile's samples, row-major
+    std::vector<float> row_;     // one row of one AOV, its channels interleaved
 };
 
 // Debug builds check what a pass wrote: every radiometric AOV finite (light_emission.h keeps
@@ -453,6 +458,9 @@ bool renderPass(const Frame& frame, const CameraView& camera, const RenderOption
             }
             const int x0 = (t % tilesX) * tileWidth, y0 = (t / tilesX) * tileHeight;
             const int x1 = std::min(x0 + tileWidth, width), y1 = std::min(y0 + tileHeight, height);
+            // A tile no primary ray can hit holds the background, which the centre pass looked up
+            // filtered over the pixel's footprint already: later passes leave it.
+            if (pass > 0 && !context.scene.overlaps(x0, y0, x1, y1)) continue;
             for (int by = y0; by < y1; by += kBlockHeight)
                 for (int bx = x0; bx < x1; bx += kBlockWidth) {
                     block.count = 0;
@@ -463,7 +471,7 @@ bool renderPass(const Frame& frame, const CameraView& camera, const RenderOption
                         }
                     shadeBlock(context, block);
                     for (int i = 0; i < block.count; ++i)
-                        tile.set(std::size_t(block.y[i] - y0) * tileWidth + (block.x[i] - x0), block.pixels[i]);
+                        tile.pixel(std::size_t(block.y[i] - y0) * tileWidth + (block.x[i] - x0)) = block.pixels[i];
                 }
             tile.flush(x0, y0, x1, y1, blend);
         }

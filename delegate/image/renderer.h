@@ -74,6 +74,9 @@ using AovTargets = std::array<hd::RenderBuffer*, hd::kAovCount>;
 // pattern (sample_pattern.h) and update the filtered AOVs to the filter-weighted mean of
 // the samples so far (pixel_filter.h), which pass 1 starts afresh. So the image after pass
 // 0 is the single-sample image, and the converged one holds samplesPerPixel samples.
+// Tiles outside the scene's projected bounds see only the background, which pass 0 looks up
+// filtered over each pixel's footprint (DomeLookup at the pixel's angle): later passes skip
+// them.
 int passCount(const RenderOptions& options);
 
 // Renders pass `pass` tile by tile into the targets (each tile written whole, under the
