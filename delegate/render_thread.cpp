@@ -21,12 +21,12 @@ void RenderThread::loop() {
         if (terminate_) return;
         startRequested_ = false;
         stopRequested_ = false;
-        rendering_ = true;
+        running_ = true;
         lock.unlock();
         render_();
         lock.lock();
-        rendering_ = startRequested_;
-        if (!rendering_) idle_.notify_all();
+        running_ = false;
+        idle_.notify_all();
     }
 }
 
@@ -35,7 +35,6 @@ void RenderThread::startRender() {
         std::lock_guard lock(mutex_);
         startRequested_ = true;
         stopRequested_ = true;  // a running callback ends at its next checkpoint; loop() clears it
-        rendering_ = true;
     }
     wake_.notify_all();
 }
@@ -45,7 +44,7 @@ void RenderThread::stopRender() {
     startRequested_ = false;
     stopRequested_ = true;
     wake_.notify_all();
-    idle_.wait(lock, [this] { return !rendering_; });
+    idle_.wait(lock, [this] { return !running_; });
 }
 
 void RenderThread::pauseRender() {
@@ -68,7 +67,7 @@ bool RenderThread::isPaused() const {
 
 bool RenderThread::isRendering() const {
     std::lock_guard lock(mutex_);
-    return rendering_;
+    return running_ || startRequested_;
 }
 
 bool RenderThread::checkpoint() {

@@ -47,7 +47,7 @@ private:
     std::condition_variable wake_;   // startRender, resume, stop, terminate
     std::condition_variable idle_;   // the callback returned
     bool startRequested_ = false, stopRequested_ = false, paused_ = false, terminate_ = false;
-    bool rendering_ = false;
+    bool running_ = false;  // the callback is executing (a start may be pending besides)
     std::thread thread_;  // last: starts after the members it uses
 };
 

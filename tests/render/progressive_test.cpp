@@ -255,7 +255,8 @@ TEST(Progressive, PauseStopsTheWorkAndResumeFinishesIt) {
 }
 
 // A uniform dome and nothing else: every pixel of a frame holds the dome's colour exactly,
-// whatever the pass. A tile half written would show two colours.
+// whatever the pass. A tile half written would show two colours. The dome and the render
+// settings change 40 times while a reader maps the buffer without pause.
 TEST(Progressive, MappedBuffersNeverShowATornTile) {
     OpalRenderDelegate delegate;
     test::CountingScene scene;
@@ -295,6 +296,9 @@ TEST(Progressive, MappedBuffersNeverShowATornTile) {
         scene.lights["/World/Sky"].intensity = 1.0 + i % 2;
         index.changeTracker().markDirty("/World/Sky", hd::Dirty::Params);
         index.sync();  // restarts the frame
+        // Settings that restart it too, without changing what a tile should hold.
+        delegate.setRenderSetting("opal:samplesPerPixel", i % 3 == 0 ? 8 : 16);
+        delegate.setRenderSetting("opal:pixelFilter", std::string(i % 4 == 0 ? "blackmanHarris" : "box"));
         pass->execute(state, bindings);
         std::this_thread::sleep_for(std::chrono::milliseconds(2));
     }
