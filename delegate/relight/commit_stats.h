@@ -1,7 +1,7 @@
 // What a commitResources did and how long it took: for hosts (a viewer's status line),
 // benchmarks (irradiance vs products vs material time) and tests (a material edit must not
-// recompute irradiance products). The delegate reports them as read-only render settings
-// "opal:stats:..." too (delegate/DELEGATE.md).
+// recompute irradiance products). The delegate reports them in renderStats() too
+// (delegate/DELEGATE.md#render-stats).
 #pragma once
 
 #include <cstdint>
