@@ -4,13 +4,14 @@
 // Threads: a render thread writes tiles while the host reads. map() locks the buffer for
 // reading and unmap() releases it; tiles are written whole under writeTiles(), which waits
 // while the buffer is mapped, so a mapped buffer never shows part of a tile. Writers of
-// different tiles do not wait for each other. allocate() and data() are for when nothing
-// renders into the buffer (before execute, or once the pass is converged or stopped).
+// different tiles do not wait for each other. allocate() waits for readers too; data() and
+// pixel() are for when nothing renders into the buffer (once converged or stopped).
 #pragma once
 
 #include "delegate/hd/prim.h"
 
 #include <atomic>
+#include <mutex>
 #include <shared_mutex>
 #include <span>
 #include <vector>
@@ -21,8 +22,10 @@ class RenderBuffer : public Bprim {
 public:
     using Bprim::Bprim;
 
-    // Every channel of every pixel = clearValue; not converged.
+    // Every channel of every pixel = clearValue; not converged. Waits while the buffer is
+    // mapped (a host's reader never sees it change size under it).
     void allocate(int width, int height, int channels, float clearValue = 0.0f) {
+        std::unique_lock lock(mutex_);
         width_ = width;
         height_ = height;
         channels_ = channels;
