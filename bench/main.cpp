@@ -19,7 +19,8 @@ void printUsage(std::FILE* out, std::span<const opal::bench::Subcommand> subcomm
 
 int main(int argc, char** argv) {
     const std::array subcommands = {opal::bench::basisSubcommand(), opal::bench::bakeSubcommand(),
-                                    opal::bench::relightSubcommand(), opal::bench::transferRowSubcommand()};
+                                    opal::bench::relightSubcommand(), opal::bench::transferRowSubcommand(),
+                                    opal::bench::accuracySubcommand()};
     if (argc < 2) {
         printUsage(stderr, subcommands);
         return 2;

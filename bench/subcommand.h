@@ -19,5 +19,6 @@ Subcommand basisSubcommand();
 Subcommand bakeSubcommand();
 Subcommand relightSubcommand();
 Subcommand transferRowSubcommand();
+Subcommand accuracySubcommand();
 
 }  // namespace opal::bench
