@@ -19,6 +19,11 @@
 // on a random subset of outputs scaled to all (--reference-outputs). One untimed warm-up
 // precedes each case's repeats. The delegate's own statistics (CommitStats) split each
 // commit into irradiance, products and material, which is where the time goes.
+//
+// --peer jensen-buhler adds the classic peer to the material and light cases: Jensen and
+// Buhler's hierarchical dipole (bench/jensen_buhler.h) on the reference's edit, same exact E,
+// same material, at maxError 0.05 (pbrt-v2's default) and a sweep 0.02 to 0.5: its time and
+// its error against the gather, beside the engine's.
 #include "bench/cpu_time.h"
 #include "bench/relight_reference.h"
 #include "bench/relight_scene.h"
@@ -68,6 +73,9 @@ constexpr double kLightSpeedup = 100.0;
 constexpr double kMaterialSpeedup = 10000.0;
 constexpr int kWidth = 1280, kHeight = 720;
 constexpr double kDomeStepDegrees = 23.0;
+// The peer's maxError sweep; pbrt-v2's default 0.05 is the headline figure.
+constexpr double kPeerMaxErrors[] = {0.02, 0.05, 0.1, 0.2, 0.5};
+constexpr double kPeerDefaultMaxError = JensenBuhlerOctree::kDefaultMaxError;
 
 struct Options {
     fs::path asset;
@@ -77,6 +85,7 @@ struct Options {
     fs::path jsonFile;
     fs::path preview;
     std::vector<std::string> cases = {"material", "light", "environment", "frame"};
+    std::string peer;  // "jensen-buhler" or empty
 
     bool runs(std::string_view name) const { return std::find(cases.begin(), cases.end(), name) != cases.end(); }
 };
@@ -335,11 +344,12 @@ void announce(const char* what) {
 // The exact reference for one more edit of each kind, after the timed cases.
 void runReference(Session& s, const std::shared_ptr<const TranslucentAsset>& asset,
                   const std::shared_ptr<const LatLongMap>& domeMap, int repeats, std::size_t outputs,
-                  std::vector<CaseResult>& cases) {
+                  std::vector<double> peerMaxErrors, std::vector<CaseResult>& cases) {
     const bool needed = std::any_of(cases.begin(), cases.end(), [](const CaseResult& c) { return c.name != "frame" && c.name != "converge" && c.name != "light_frame"; });
     std::optional<RelightReference> reference;
     if (needed) {
-        reference.emplace(s.scene, asset, domeMap, s.scene.material(RelightScene::MaterialPath).subsurface, outputs);
+        reference.emplace(s.scene, asset, domeMap, s.scene.material(RelightScene::MaterialPath).subsurface, outputs,
+                          std::move(peerMaxErrors));
         char line[200];
         std::snprintf(line, sizeof line, "exact reference: gathering %zu of %zu outputs x %zu samples per case%s",
                       reference->outputs(), asset->samples.size(), asset->samples.size(),
@@ -418,6 +428,55 @@ void printBreakdown(const std::vector<CaseResult>& cases) {
     }
 }
 
+// The peer's time for one edit: its own work for the edit (refit + evaluation after a light
+// move, evaluation alone after a material edit), and with the exact E it needs (the light's
+// E_m and E(eta), as the reference computes them) for the light move.
+double peerEditMs(const CaseResult& c, const PeerPoint& p) {
+    return c.name == "light" ? c.reference->peer->refitMs + p.evaluateMs : p.evaluateMs;
+}
+double peerWithIrradianceMs(const CaseResult& c, const PeerPoint& p) {
+    return peerEditMs(c, p) + (c.name == "light" ? c.reference->irradianceMs + c.reference->exactMs : 0.0);
+}
+
+void printPeer(const std::vector<CaseResult>& cases) {
+    for (const CaseResult& c : cases) {
+        if (!c.reference || !c.reference->peer) continue;
+        const PeerTiming& peer = *c.reference->peer;
+        std::printf("\npeer, Jensen-Buhler hierarchical dipole, %s edit (octree cells %s ms once per asset; aggregates "
+                    "refit %s ms per light change); engine: median %s ms per edit, relative RMSE %.2e against the exact "
+                    "gather:\n", c.name.c_str(), msText(peer.structureMs).c_str(), msText(peer.refitMs).c_str(),
+                    msText(c.times.median()).c_str(), peer.engineRelativeRmse);
+        std::printf("  %9s %12s %10s %14s %13s %11s %14s\n", "maxError", "evaluate ms", "edit ms", "edit + E ms",
+                    "interactions", "rel. RMSE", "engine faster");
+        for (const PeerPoint& p : peer.sweep)
+            std::printf("  %9.2f %12s %10s %14s %13.0f %11.2e %13.0fx%s\n", p.maxError, msText(p.evaluateMs).c_str(),
+                        msText(peerEditMs(c, p)).c_str(), msText(peerWithIrradianceMs(c, p)).c_str(),
+                        p.interactionsPerOutput, p.relativeRmse, peerWithIrradianceMs(c, p) / c.times.median(),
+                        p.maxError == kPeerDefaultMaxError ? "  <- pbrt-v2's default" : "");
+    }
+}
+
+Json peerJson(const CaseResult& c) {
+    const PeerTiming& peer = *c.reference->peer;
+    Json sweep = Json::array();
+    for (const PeerPoint& p : peer.sweep)
+        sweep.push_back({{"max_error", p.maxError},
+                         {"evaluate_ms", p.evaluateMs},
+                         {"edit_ms", peerEditMs(c, p)},
+                         {"edit_with_irradiance_ms", peerWithIrradianceMs(c, p)},
+                         {"interactions_per_output", p.interactionsPerOutput},
+                         {"relative_rmse", p.relativeRmse},
+                         {"engine_speedup", peerWithIrradianceMs(c, p) / c.times.median()}});
+    Json j = {{"method", "jensen-buhler"},
+              {"octree_cells_ms", peer.structureMs},
+              {"refit_ms", peer.refitMs},
+              {"engine_relative_rmse", peer.engineRelativeRmse},
+              {"sweep", sweep}};
+    for (const PeerPoint& p : peer.sweep)
+        if (p.maxError == kPeerDefaultMaxError) j["at_default"] = sweep[&p - peer.sweep.data()];
+    return j;
+}
+
 Json optionalJson(std::optional<double> v) { return v ? Json(*v) : Json(nullptr); }
 
 Json caseJson(const CaseResult& c) {
@@ -444,6 +503,7 @@ Json caseJson(const CaseResult& c) {
                                        {"gather_measured", c.reference->measuredGatherMs},
                                        {"gather_cpu", c.reference->gatherCpuMs},
                                        {"vertices", c.reference->verticesMs}};
+    if (c.reference && c.reference->peer) j["peer"] = peerJson(c);
     if (!c.referenceNote.empty()) j["reference_note"] = c.referenceNote;
     return j;
 }
@@ -533,13 +593,16 @@ int run(const Options& options) {
     }
     for (const std::string& warning : session.delegate.takeWarnings()) std::printf("  warning: %s\n", warning.c_str());
 
-    runReference(session, asset, domeMap, options.repeats, options.referenceOutputs, cases);
+    std::vector<double> peerMaxErrors;
+    if (!options.peer.empty()) peerMaxErrors.assign(std::begin(kPeerMaxErrors), std::end(kPeerMaxErrors));
+    runReference(session, asset, domeMap, options.repeats, options.referenceOutputs, std::move(peerMaxErrors), cases);
     info.referenceOutputs = std::min(options.referenceOutputs ? options.referenceOutputs : info.samples, info.samples);
     info.extrapolated = info.referenceOutputs < info.samples;
     info.loadAfter = loadAverage();
 
     printTable(cases);
     printBreakdown(cases);
+    printPeer(cases);
     std::printf("\nframe: %.1f%% of the pixels hit the asset; %u hardware threads; load average %.1f before, %.1f after\n",
                 100.0 * info.coverage, std::thread::hardware_concurrency(), info.loadBefore, info.loadAfter);
     if (info.extrapolated)
@@ -571,6 +634,9 @@ int runRelightBench(int argc, char** argv) {
     app.add_option("--case", options.cases, "run only these cases (repeatable; default: all)")
         ->check(CLI::IsMember({"material", "light", "environment", "frame"}))
         ->capture_default_str();
+    app.add_option("--peer", options.peer, "also run the classic peer on the material and light edits: Jensen and "
+                                           "Buhler's hierarchical dipole (maxError 0.05 and a sweep 0.02 to 0.5)")
+        ->check(CLI::IsMember({"jensen-buhler"}));
     app.add_option("--preview", options.preview, "also write the timed frame's color (OCIO default view) to this "
                                                  ".png or .jpg");
     CLI11_PARSE(app, argc, argv);

@@ -7,6 +7,7 @@
 #include "delegate/relight/relight_engine.h"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 #include <random>
 
@@ -32,12 +33,19 @@ std::vector<std::uint32_t> randomOutputs(std::size_t samples, std::size_t count)
 
 RelightReference::RelightReference(const RelightScene& scene, std::shared_ptr<const TranslucentAsset> asset,
                                    std::shared_ptr<const LatLongMap> domeMap, const Material& material,
-                                   std::size_t outputs)
+                                   std::size_t outputs, std::vector<double> peerMaxErrors)
     : asset_(asset),
       domeMap_(std::move(domeMap)),
       irradiance_(asset, Imath::M44d()),
       material_(material),
-      outputs_(randomOutputs(asset->samples.size(), outputs)) {
+      outputs_(randomOutputs(asset->samples.size(), outputs)),
+      peerMaxErrors_(std::move(peerMaxErrors)) {
+    if (!peerMaxErrors_.empty()) {
+        const Stopwatch clock;
+        octree_.emplace(*asset_);
+        octreeMs_ = clock.ms();
+        engine_.emplace(asset_);
+    }
     rays_.addMesh(asset_->mesh, Imath::M44d());
     rays_.commit();
     irradiance_.setLight(RelightScene::KeyLightPath, AnalyticLight::fromDesc(scene.keyLight()), rays_);
@@ -49,7 +57,7 @@ RelightReference::RelightReference(const RelightScene& scene, std::shared_ptr<co
 ReferenceTiming RelightReference::materialEdit(const Material& material) {
     material_ = material;
     ReferenceTiming timing;
-    radiance(timing);
+    radiance(timing, true);
     return timing;
 }
 
@@ -58,7 +66,7 @@ ReferenceTiming RelightReference::keyLightMove(const hd::LightDesc& key) {
     const Stopwatch clock;
     irradiance_.setLight(RelightScene::KeyLightPath, AnalyticLight::fromDesc(key), rays_);
     timing.irradianceMs = clock.ms();
-    radiance(timing);
+    radiance(timing, true);
     return timing;
 }
 
@@ -68,11 +76,11 @@ ReferenceTiming RelightReference::domeRotation(const hd::LightDesc& dome) {
     irradiance_.setLight(RelightScene::DomePath,
                          std::make_shared<const EnvironmentLight>(EnvironmentLight::fromDesc(domeMap_, dome)));
     timing.irradianceMs = clock.ms();
-    radiance(timing);
+    radiance(timing, false);
     return timing;
 }
 
-void RelightReference::radiance(ReferenceTiming& timing) {
+void RelightReference::radiance(ReferenceTiming& timing, bool withPeer) {
     const std::size_t samples = asset_->samples.size();
     const Stopwatch exactClock;
     const std::vector<float> exact = irradiance_.exactIrradiance(material_.eta);
@@ -101,6 +109,38 @@ void RelightReference::radiance(ReferenceTiming& timing) {
     interpolateToVertices(asset_->vertexWeights, extrapolated() ? perSample : gathered, vertexRadiance);
     interpolateToVertices(asset_->vertexWeights, exact, vertexIrradiance);
     timing.verticesMs = verticesClock.ms();
+    if (octree_ && withPeer) timing.peer = peer(exact, gathered);
+}
+
+PeerTiming RelightReference::peer(std::span<const float> exact, std::span<const float> gathered) {
+    PeerTiming timing;
+    timing.structureMs = octreeMs_;
+    const Stopwatch refitClock;
+    octree_->setIrradiance(exact);
+    timing.refitMs = refitClock.ms();
+    for (double maxError : peerMaxErrors_) {
+        const Stopwatch clock;
+        const JensenBuhlerOctree::Result result = octree_->radiance(material_, maxError);
+        timing.sweep.push_back({maxError, clock.ms(), result.interactionsPerOutput, relativeRmse(result.radiance, gathered)});
+    }
+    engine_->setIrradiance(irradiance_.moments());
+    engine_->setMaterial(material_);
+    timing.engineRelativeRmse = relativeRmse(engine_->sampleRadiance(), gathered);
+    return timing;
+}
+
+// sqrt(sum |a - b|^2 / sum |b|^2) over the gather's outputs; all: every sample x 3.
+double RelightReference::relativeRmse(std::span<const float> all, std::span<const float> gathered) const {
+    double diff = 0.0, norm = 0.0;
+    for (std::size_t j = 0; j < outputs(); ++j) {
+        const std::size_t sample = extrapolated() ? outputs_[j] : j;
+        for (int c = 0; c < 3; ++c) {
+            const double a = all[3 * sample + c], b = gathered[3 * j + c];
+            diff += (a - b) * (a - b);
+            norm += b * b;
+        }
+    }
+    return std::sqrt(diff / norm);
 }
 
 }  // namespace opal::bench

@@ -12,19 +12,42 @@
 // The gather may be run on a random subset of the outputs and scaled to all of them: its
 // cost is exactly linear in the outputs (each output is the same O(N) loop), while the
 // other steps always run in full.
+//
+// With the peer on (--peer jensen-buhler), material edits and key-light moves also run Jensen and Buhler's
+// hierarchical dipole (bench/jensen_buhler.h) on the same exact E and material, at each
+// maxError of a sweep, and measures its error and the engine's (RelightEngine on the same
+// irradiance moments and material) against the gather, at the gather's outputs.
 #pragma once
 
+#include "bench/jensen_buhler.h"
 #include "delegate/relight/environment_light.h"
 #include "delegate/relight/mesh_irradiance.h"
+#include "delegate/relight/relight_engine.h"
 #include "raytrace/ray_scene.h"
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace opal::bench {
 
 class RelightScene;
+
+// The peer at one maxError: the evaluation over every sample and its error.
+struct PeerPoint {
+    double maxError = 0.0;
+    double evaluateMs = 0.0;            // L at every sample from the octree
+    double interactionsPerOutput = 0.0; // dipole evaluations per output
+    double relativeRmse = 0.0;          // against the gather, at its outputs
+};
+
+struct PeerTiming {
+    double structureMs = 0.0;  // the octree's cells (positions only: once per asset)
+    double refitMs = 0.0;      // the node aggregates for this edit's E (per light change)
+    std::vector<PeerPoint> sweep;
+    double engineRelativeRmse = 0.0;  // RelightEngine on the same edit, same outputs
+};
 
 struct ReferenceTiming {
     double irradianceMs = 0.0;      // the changed light's E_m (light and dome edits)
@@ -34,6 +57,8 @@ struct ReferenceTiming {
     double gatherCpuMs = 0.0;       // the process's CPU time over the gather, scaled as gatherMs
     double verticesMs = 0.0;        // L and E to the render-mesh vertices
 
+    std::optional<PeerTiming> peer;
+
     double totalMs() const { return irradianceMs + exactMs + gatherMs + verticesMs; }
 };
 
@@ -41,8 +66,10 @@ class RelightReference {
 public:
     // Takes the scene's current lights and material (untimed). outputs: how many random
     // output samples the gather evaluates (0, or at least the sample count: all of them).
+    // peerMaxErrors: the peer's sweep (empty: no peer).
     RelightReference(const RelightScene& scene, std::shared_ptr<const TranslucentAsset> asset,
-                     std::shared_ptr<const LatLongMap> domeMap, const Material& material, std::size_t outputs);
+                     std::shared_ptr<const LatLongMap> domeMap, const Material& material, std::size_t outputs,
+                     std::vector<double> peerMaxErrors = {});
 
     std::size_t outputs() const { return outputs_.empty() ? asset_->samples.size() : outputs_.size(); }
     bool extrapolated() const { return !outputs_.empty(); }
@@ -52,7 +79,10 @@ public:
     ReferenceTiming domeRotation(const hd::LightDesc& dome);
 
 private:
-    void radiance(ReferenceTiming& timing);  // exact E, the gather, the vertices
+    // Exact E, the gather, the vertices; the peer too when asked and on.
+    void radiance(ReferenceTiming& timing, bool withPeer);
+    PeerTiming peer(std::span<const float> exact, std::span<const float> gathered);
+    double relativeRmse(std::span<const float> all, std::span<const float> gathered) const;
 
     std::shared_ptr<const TranslucentAsset> asset_;
     std::shared_ptr<const LatLongMap> domeMap_;
@@ -60,6 +90,10 @@ private:
     MeshIrradiance irradiance_;
     Material material_;
     std::vector<std::uint32_t> outputs_;  // empty: every sample
+    std::vector<double> peerMaxErrors_;
+    std::optional<JensenBuhlerOctree> octree_;
+    double octreeMs_ = 0.0;
+    std::optional<RelightEngine> engine_;
 };
 
 }  // namespace opal::bench

@@ -2,6 +2,7 @@
 
 #include "schema/error.h"
 #include "schema/scatter/dipole.h"
+#include "schema/scatter/dipole_profile.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -11,34 +12,6 @@
 #include <string>
 
 namespace opal {
-
-namespace {
-
-// R_d(r) of one channel with the r-independent terms computed once (docs/ARCHITECTURE.md#dipole):
-// R_d(r) = alpha'/(4 pi) [z_r (sigma_tr + 1/d_r) e^{-sigma_tr d_r}/d_r^2
-//                       + z_v (sigma_tr + 1/d_v) e^{-sigma_tr d_v}/d_v^2].
-class Dipole {
-public:
-    explicit Dipole(const DipoleCoefficients& c) {
-        const double sigmaTPrime = c.sigmaSPrime + c.sigmaA;
-        const double fdr = fresnelDiffuseReflectance(c.eta);
-        const double a = (1.0 + fdr) / (1.0 - fdr);
-        scale_ = c.sigmaSPrime / sigmaTPrime / (4.0 * std::numbers::pi);
-        sigmaTr_ = std::sqrt(3.0 * c.sigmaA * sigmaTPrime);
-        zr_ = 1.0 / sigmaTPrime;
-        zv_ = zr_ * (1.0 + 4.0 * a / 3.0);
-    }
-    double operator()(double r2) const { return scale_ * (pole(r2, zr_) + pole(r2, zv_)); }
-
-private:
-    double pole(double r2, double z) const {
-        const double d2 = r2 + z * z, d = std::sqrt(d2);
-        return z * (sigmaTr_ + 1.0 / d) * std::exp(-sigmaTr_ * d) / d2;
-    }
-    double scale_ = 0.0, sigmaTr_ = 0.0, zr_ = 0.0, zv_ = 0.0;
-};
-
-}  // namespace
 
 std::vector<float> referenceGather(const TranslucentAsset& asset, const Material& material,
                                    std::span<const float> irradiance, std::span<const std::uint32_t> outputs) {
@@ -50,7 +23,8 @@ std::vector<float> referenceGather(const TranslucentAsset& asset, const Material
     for (std::uint32_t o : outputs)
         if (o >= n) throw Error("reference gather: output sample " + std::to_string(o) + " out of range");
     const double toMm = 1.0 / asset.unitsPerMm;
-    const Dipole profile[3] = {Dipole(material.channel(0)), Dipole(material.channel(1)), Dipole(material.channel(2))};
+    const DipoleProfile profile[3] = {DipoleProfile(material.channel(0)), DipoleProfile(material.channel(1)),
+                                     DipoleProfile(material.channel(2))};
     const std::size_t count = outputs.empty() ? n : outputs.size();
     std::vector<float> radiance(3 * count);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 16), [&](const tbb::blocked_range<std::size_t>& r) {
