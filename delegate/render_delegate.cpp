@@ -90,6 +90,7 @@ std::map<hd::Token, hd::Value> OpalRenderDelegate::renderStats() const {
     stats["passes"] = done;
     stats["passMs"] = lastPassMs_.load();
     stats["convergedMs"] = convergedMs_.load();
+    std::lock_guard lock(statsMutex_);
     stats["converged"] = converged_.load();
     stats["commits"] = saturated(commits_);
     stats["commitMs"] = lastCommit_.totalMs;
@@ -157,7 +158,10 @@ void OpalRenderDelegate::finalizeRenderIndex(hd::RenderIndex& index) {
     frame_.reset();
     committedMeshes_.clear();
     meshPaths_.clear();
-    meshMemory_.clear();
+    {
+        std::lock_guard lock(statsMutex_);
+        meshMemory_.clear();
+    }
     index_ = nullptr;
 }
 
@@ -283,14 +287,16 @@ void OpalRenderDelegate::commitResources(hd::RenderIndex& index) {
     for (TranslucentMesh* mesh : meshes) mesh->markCommitted();
     committedMeshes_.assign(meshes.begin(), meshes.end());
     meshPaths_.clear();
-    meshMemory_.clear();
+    std::vector<std::pair<hd::SdfPath, std::size_t>> memory;
     for (const TranslucentMesh* mesh : meshes) {
         meshPaths_.push_back(mesh->id());
-        meshMemory_.emplace_back(mesh->id(), mesh->memoryBytes());
+        memory.emplace_back(mesh->id(), mesh->memoryBytes());
     }
     committedSettingsVersion_ = settingsVersion_;
     publish(std::move(frame));
     stats.totalMs = millisecondsSince(start);
+    std::lock_guard lock(statsMutex_);  // renderStats() may be read from another thread
+    meshMemory_ = std::move(memory);
     lastCommit_ = stats;
     totals_ += stats;
     ++commits_;

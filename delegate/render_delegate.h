@@ -75,6 +75,7 @@ public:
     // ---- Opal's own, for hosts linking the delegate, benchmarks and tests.
     const RenderSettings& settings() const { return settings_; }
     // The last commit's timings and counts, and the counts summed over every commit.
+    // From the thread that syncs (renderStats() has them for any thread).
     const CommitStats& lastCommit() const { return lastCommit_; }
     const CommitStats& totals() const { return totals_; }
     std::uint64_t commits() const { return commits_; }
@@ -113,6 +114,8 @@ private:
     std::vector<hd::SdfPath> meshPaths_;
     std::shared_ptr<const Frame> frame_;
 
+    // The commit's figures, written by commitResources and read by renderStats() from any thread.
+    mutable std::mutex statsMutex_;
     CommitStats lastCommit_, totals_;
     std::uint64_t commits_ = 0;
     std::vector<std::pair<hd::SdfPath, std::size_t>> meshMemory_;  // engine bytes per mesh, last commit
