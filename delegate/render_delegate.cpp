@@ -239,9 +239,9 @@ void OpalRenderDelegate::renderJob() {
         job = *job_;
         generation = jobGeneration_;
         jobStart_ = std::chrono::steady_clock::now();
-        passCount_ = passCount(job.options);
     }
     const int passes = passCount(job.options);
+    passCount_ = passes;
     try {
         const CameraView camera(job.camera, job.width, job.height, job.cameraPath);
         for (int pass = 0; pass < passes; ++pass) {

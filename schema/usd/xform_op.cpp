@@ -89,21 +89,10 @@ std::span<const ValueType> xformOpValueTypes(XformOpType type) {
     }
 }
 
-Imath::M44d translateMatrix(const Imath::V3d& offset) {
-    Imath::M44d m;
-    m[3][0] = offset.x;
-    m[3][1] = offset.y;
-    m[3][2] = offset.z;
-    return m;
-}
+// Imath's own: row-vector matrices, the translation in the last row.
+Imath::M44d translateMatrix(const Imath::V3d& offset) { return Imath::M44d().setTranslation(offset); }
 
-Imath::M44d scaleMatrix(const Imath::V3d& factors) {
-    Imath::M44d m;
-    m[0][0] = factors.x;
-    m[1][1] = factors.y;
-    m[2][2] = factors.z;
-    return m;
-}
+Imath::M44d scaleMatrix(const Imath::V3d& factors) { return Imath::M44d().setScale(factors); }
 
 Imath::M44d rotateMatrix(int axis, double degrees) {
     const double radians = degrees * std::numbers::pi / 180.0;
