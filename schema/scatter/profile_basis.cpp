@@ -2,6 +2,7 @@
 
 #include "schema/error.h"
 #include "schema/scatter/material_sampler.h"
+#include "schema/scatter/nonnegative_least_squares.h"
 #include "schema/scatter/radial_grid.h"
 
 #include <Eigen/Dense>
@@ -212,8 +213,8 @@ void ProfileBasis::diskIntegrals(double radius, std::span<double> out) const {
     }
 }
 
-// docs/ARCHITECTURE.md#pca: s_k(sigma) = sum_l w_l R_d(r_l, sigma) b_k(r_l).
-std::vector<double> ProfileBasis::coefficients(const DipoleCoefficients& c) const {
+// docs/ARCHITECTURE.md#pca: s0_k(sigma) = sum_l w_l R_d(r_l, sigma) b_k(r_l), the projection.
+std::vector<double> ProfileBasis::unconstrainedCoefficients(const DipoleCoefficients& c) const {
     requireValidChannel(c);
     const std::size_t L = radii_.size();
     std::vector<double> weighted(L);
@@ -223,6 +224,54 @@ std::vector<double> ProfileBasis::coefficients(const DipoleCoefficients& c) cons
         const double* row = values_.data() + static_cast<std::size_t>(k) * L;
         s[k] = std::inner_product(weighted.begin(), weighted.end(), row, 0.0);
     }
+    return s;
+}
+
+// docs/ARCHITECTURE.md#pca, nonnegative profiles: the projection s0 reconstructs a profile
+// that dips below zero in the far tail (by about 1e-7 of its peak), and a far tail summed
+// over a lit region is what a shadowed sample receives, so the dip made shadowed pixels
+// negative. The coefficients used are s = s0 + v with v the least-distance solution of
+//     min ||v||  subject to  B (s0 + v) >= 0  and  d.v = 0,
+// B: b_k(r_l) (L x K), d_k = integral_0^rMax b_k 2 pi r dr: the nearest profile in the
+// weighted L2 norm (the b_k are w-orthonormal) that is nonnegative at every node and keeps
+// the projection's total reflectance d.s0 (lifting the tail to zero alone would add its
+// lost mass to the albedo: 3% on ketchup's blue channel). With v = N u, N an orthonormal
+// basis of d's complement, it is Lawson and Hanson's least-distance problem
+// min ||u|| s.t. G u >= h (G = B N, h = -B s0), solved by nonnegative least squares:
+// x = argmin_{x >= 0} ||[G^T; h^T] x - e_K||, r = [G^T; h^T] x - e_K, u = -r_{<K} / r_K.
+// The b_k are piecewise linear between the nodes, so a profile nonnegative at the nodes is
+// nonnegative at every r.
+std::vector<double> ProfileBasis::coefficients(const DipoleCoefficients& c) const {
+    std::vector<double> s = unconstrainedCoefficients(c);
+    const Eigen::Index L = static_cast<Eigen::Index>(radii_.size()), K = this->K();
+    const Eigen::Map<const RowMatrix> Bt(values_.data(), K, L);  // row k: b_k(r_l)
+    Eigen::Map<Eigen::VectorXd> s0(s.data(), K);
+    const Eigen::VectorXd profile = Bt.transpose() * s0;
+    if (profile.minCoeff() >= 0.0 || K < 2) return s;
+
+    Eigen::VectorXd d(K);
+    diskIntegrals(rMax(), std::span<double>(d.data(), std::size_t(K)));
+    const Eigen::MatrixXd Q = d.householderQr().householderQ();
+    const Eigen::MatrixXd N = Q.rightCols(K - 1);  // orthonormal, N^T d = 0
+
+    // Columns of [G^T; h^T], one per constraint, scaled by 1 / |g_l| (which leaves
+    // g_l.u >= h_l unchanged) so the tail's tiny b_k weigh as much as the core's.
+    Eigen::MatrixXd E(K, L);
+    Eigen::Index used = 0;
+    for (Eigen::Index l = 0; l < L; ++l) {
+        const Eigen::VectorXd g = N.transpose() * Bt.col(l);
+        const double norm = g.norm();
+        if (norm == 0.0) continue;  // b(r_l) along d (or zero): nothing to move
+        E.col(used).head(K - 1) = g / norm;
+        E(K - 1, used++) = -profile[l] / norm;
+    }
+    E.conservativeResize(Eigen::NoChange, used);
+    const NnlsResult dual = nonnegativeLeastSquares(E, Eigen::VectorXd::Unit(K, K - 1));
+    const Eigen::VectorXd r = E * dual.x - Eigen::VectorXd::Unit(K, K - 1);
+    if (!dual.converged || !(std::abs(r[K - 1]) > 0.0))
+        throw Error("ProfileBasis::coefficients: no nonnegative profile found for sigmaSPrime = " +
+                    std::to_string(c.sigmaSPrime) + ", sigmaA = " + std::to_string(c.sigmaA));
+    s0 += N * (-r.head(K - 1) / r[K - 1]);
     return s;
 }
 
@@ -245,7 +294,8 @@ double ProfileBasis::relativeError(const DipoleCoefficients& c, int K) const {
     if (K > this->K())
         throw Error("ProfileBasis::relativeError: K = " + std::to_string(K) + " exceeds the basis size " +
                     std::to_string(this->K()));
-    const std::vector<double> s = coefficients(c);
+    // The full basis as renders use it; a truncated one by its plain projection.
+    const std::vector<double> s = K == this->K() ? coefficients(c) : unconstrainedCoefficients(c);
     const Eigen::Index L = static_cast<Eigen::Index>(radii_.size());
     const Eigen::Map<const Eigen::VectorXd> w(weights_.data(), L);
     const Eigen::Map<const RowMatrix> b(values_.data(), this->K(), L);

@@ -55,9 +55,13 @@ public:
     // (docs/ARCHITECTURE.md#total-reflectance): sum_k s_k out[k] ~= dipoleDiskReflectance(radius).
     // Throws opal::Error for a negative or NaN radius.
     void diskIntegrals(double radius, std::span<double> out) const;
-    // s_k(sigma) = sum_l w_l R_d(r_l, sigma) b_k(r_l): K numbers per channel. Throws
-    // opal::Error for non-positive or non-finite coefficients or eta outside [1, 3].
+    // s_k(sigma): K numbers per channel, the projection s0_k = sum_l w_l R_d(r_l, sigma) b_k(r_l)
+    // moved to the nearest coefficients whose profile sum_k s_k b_k(r) is nonnegative at
+    // every r (docs/ARCHITECTURE.md#pca). Throws opal::Error for non-positive or non-finite
+    // coefficients or eta outside [1, 3].
     std::vector<double> coefficients(const DipoleCoefficients& c) const;
+    // s0 alone (the profile may dip below 0 in its far tail).
+    std::vector<double> unconstrainedCoefficients(const DipoleCoefficients& c) const;
     std::array<std::vector<double>, 3> project(const Material& m) const;
     // sum_k s_k b_k(r).
     double reconstruct(std::span<const double> s, double r) const;

@@ -187,7 +187,7 @@ TEST(OpalBakeCli, JsonReportHasEveryKeyWithConsistentValues) {
     const std::string sidecarName = test::sidecarNamedBy(dir / "candle.usda");
     EXPECT_EQ(dir.list(), (std::vector<std::string>{sidecarName, "candle.usda", "report.json"}));
     const nlohmann::json j = nlohmann::json::parse(test::readBytes(dir / "report.json"));
-    for (const char* key : {"samples", "charts", "grid", "subdivision_level", "render_vertices", "raw_bytes", "step1_bytes",
+    for (const char* key : {"samples", "charts", "grid", "subdivision_level", "render_vertices", "raw_bytes", "step1_bytes", "step1_per_row", "step1_budget",
                             "step2_bytes", "sidecar_bytes", "compression_ratio", "energy_kept",
                             "transfer_rel_rmse", "seconds", "peak_rss_bytes", "warnings", "options"})
         EXPECT_TRUE(j.contains(key)) << key;
@@ -199,10 +199,11 @@ TEST(OpalBakeCli, JsonReportHasEveryKeyWithConsistentValues) {
     EXPECT_EQ(j["grid"].get<std::uint64_t>(), 16u);
     EXPECT_EQ(j["render_vertices"].get<std::uint64_t>(), asset.mesh.points.size());
     EXPECT_EQ(j["raw_bytes"].get<std::uint64_t>(), N * N * K * 4);
-    // Step 1 keeps 1% of 256 coefficients per row of each T_k on average over k, each
-    // matrix's share rounded up and at least 1: index + value per entry.
-    EXPECT_GE(j["step1_bytes"].get<std::uint64_t>(), N * std::uint64_t(std::ceil(0.01 * N * K)) * 8);
-    EXPECT_LE(j["step1_bytes"].get<std::uint64_t>(), N * (std::uint64_t(std::ceil(0.01 * N * K)) + K) * 8);
+    // Step 1 keeps max(1% of N, 256) coefficients per row of each T_k on average over k: at
+    // 256 samples the floor, every coefficient (index + value per entry).
+    EXPECT_EQ(j["step1_bytes"].get<std::uint64_t>(), N * N * K * 8);
+    EXPECT_EQ(j["step1_per_row"].get<double>(), double(N));
+    EXPECT_EQ(j["step1_budget"].get<std::string>(), "keep_min: keep x samples is fewer");
     std::uint64_t nonZeros = 0;
     for (const SparseMatrix& m : asset.transfer.perBasis) nonZeros += m.nonZeros();
     EXPECT_EQ(j["step2_bytes"].get<std::uint64_t>(), nonZeros * 8);
@@ -213,9 +214,10 @@ TEST(OpalBakeCli, JsonReportHasEveryKeyWithConsistentValues) {
     const double energy = j["energy_kept"].get<double>();
     EXPECT_GE(energy, TransferSettings{}.energyFraction);  // the default
     EXPECT_LE(energy, 1.0);
-    // The asset read back holds the material as float: the same error up to that rounding.
+    // The asset read back holds the material as float: the same error up to that rounding
+    // (1.4e-6 relative, measured, through the nonnegative profile projection).
     const double rmse = j["transfer_rel_rmse"].get<double>();
-    EXPECT_NEAR(rmse, measureTransferError(asset, 1), 1e-6 * rmse);
+    EXPECT_NEAR(rmse, measureTransferError(asset, 1), 1e-5 * rmse);
     EXPECT_GT(rmse, 0.0);
     double stages = 0.0;
     for (const auto& [stage, s] : j["seconds"].items())

@@ -71,7 +71,9 @@ TEST_F(DefaultBasis, TwelveTermsReachTargetOnHeldOutMaterials) {
     RecordProperty("fit_seconds", std::to_string(fitSeconds_));
     std::printf("K = 12 over 1000 held-out materials: mean %.3e, max %.3e (rMax %.1f mm, fit %.2f s)\n", stats.mean,
                 stats.max, defaultBasis().rMax(), fitSeconds_);
-    EXPECT_LE(stats.mean, 1e-3);
+    // 8.7e-4 with the plain projection; the nonnegative profiles (ProfileBasis::coefficients)
+    // add 2.2e-4 on average (ProfilesAreNonnegativeAndNoLessAccurate).
+    EXPECT_LE(stats.mean, 1.2e-3);
     EXPECT_LE(stats.max, 0.05);  // the worst materials sit in the dense, absorbing corner of the box
 }
 
@@ -88,6 +90,54 @@ TEST_F(DefaultBasis, ErrorFallsAsKGrows) {
 TEST_F(DefaultBasis, PresetsAreRepresented) {
     for (const NamedMaterial& preset : jensenPresets())
         for (int c = 0; c < 3; ++c) EXPECT_LT(defaultBasis().relativeError(preset.material.channel(c)), 5e-3) << preset.name;
+}
+
+// The projection's profile dips below zero in the far tail for some materials; the
+// coefficients renders use never do, at any radius, and cost next to nothing in accuracy.
+TEST_F(DefaultBasis, ProfilesAreNonnegativeAndNoLessAccurate) {
+    const ProfileBasis& basis = defaultBasis();
+    int dipped = 0;
+    double worstGain = 0.0, meanGain = 0.0;
+    for (const DipoleCoefficients& c : heldOut()) {
+        const std::vector<double> s0 = basis.unconstrainedCoefficients(c), s = basis.coefficients(c);
+        double peak = 0.0, dip0 = 0.0, dip = 0.0;
+        for (double r : basis.radii()) {
+            peak = std::max(peak, basis.reconstruct(s0, r));
+            dip0 = std::min(dip0, basis.reconstruct(s0, r));
+        }
+        // Between the nodes too: the b_k are piecewise linear, so midpoints suffice.
+        for (std::size_t l = 0; l + 1 < basis.radii().size(); ++l)
+            for (double t : {0.0, 0.5}) {
+                const double r = basis.radii()[l] + t * (basis.radii()[l + 1] - basis.radii()[l]);
+                dip = std::min(dip, basis.reconstruct(s, r));
+            }
+        dipped += dip0 < 0.0;
+        // The total reflectance within rMax is the projection's.
+        std::vector<double> d(std::size_t(basis.K()));
+        basis.diskIntegrals(basis.rMax(), d);
+        double albedo0 = 0.0, albedo = 0.0;
+        for (std::size_t k = 0; k < d.size(); ++k) albedo0 += d[k] * s0[k], albedo += d[k] * s[k];
+        EXPECT_NEAR(albedo, albedo0, 1e-9 * std::abs(albedo0));
+        EXPECT_GE(dip, -1e-13 * peak) << "sigmaS' " << c.sigmaSPrime << " sigmaA " << c.sigmaA;
+        // The constrained fit is the nearest nonnegative profile in the span: its error
+        // exceeds the projection's by no more than the dip it removes.
+        double num0 = 0.0, num = 0.0, den = 0.0;
+        for (std::size_t l = 0; l < basis.radii().size(); ++l) {
+            const double r = basis.radii()[l], exact = dipoleProfile(r, c), w = basis.weights()[l];
+            num0 += w * std::pow(exact - basis.reconstruct(s0, r), 2);
+            num += w * std::pow(exact - basis.reconstruct(s, r), 2);
+            den += w * exact * exact;
+        }
+        const double gain = std::sqrt(num / den) - std::sqrt(num0 / den);
+        worstGain = std::max(worstGain, gain);
+        meanGain += gain / double(heldOut().size());
+    }
+    std::printf("%d of %zu held-out materials dip below zero unconstrained; error increase mean %.2e, worst %.2e\n",
+                dipped, heldOut().size(), meanGain, worstGain);
+    EXPECT_GT(dipped, 0);  // the test would prove nothing without dips to remove
+    // Measured (K = 12): mean 2.2e-4 against the basis's own 8.7e-4; worst 4.8e-3.
+    EXPECT_LT(meanGain, 5e-4);
+    EXPECT_LT(worstGain, 1e-2);
 }
 
 TEST_F(DefaultBasis, DiskIntegralsIntegrateTheBasisAndReproduceTheDipole) {
@@ -228,12 +278,15 @@ TEST(ProfileBasis, RelativeErrorFollowsItsDefinition) {
     s.trainingMaterials = 400;
     const ProfileBasis basis = ProfileBasis::fit(s);
     const DipoleCoefficients c = findPreset("potato")->channel(1);
-    const std::vector<double> coefficients = basis.coefficients(c);
+    const std::vector<double> coefficients = basis.unconstrainedCoefficients(c);
     for (int K : {3, 8}) {
+        // The full basis is measured with the coefficients renders use, a truncated one with
+        // the plain projection.
+        const std::vector<double> used = K == basis.K() ? basis.coefficients(c) : coefficients;
         double num = 0.0, den = 0.0;
         for (std::size_t l = 0; l < basis.radii().size(); ++l) {
             const double r = basis.radii()[l], exact = dipoleProfile(r, c);
-            const double approx = basis.reconstruct(std::span(coefficients).first(K), r);
+            const double approx = basis.reconstruct(std::span(used).first(K), r);
             num += basis.weights()[l] * (exact - approx) * (exact - approx);
             den += basis.weights()[l] * exact * exact;
         }
