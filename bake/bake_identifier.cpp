@@ -84,7 +84,7 @@ std::string bakeIdentity(const BakeOptions& options, const TranslucentAsset& ass
     for (int c = 0; c < 3; ++c) s << ' ' << exact(m.sigmaSPrime[c]) << ' ' << exact(m.sigmaA[c]);
     s << ' ' << exact(m.eta) << '\n'
       << "basis " << options.basisCount << '\n'
-      << "keep " << exact(options.transfer.keepFraction) << '\n'
+      << "keep " << exact(options.transfer.keepFraction) << ' ' << options.transfer.minPerRow << '\n'
       << "energy " << exact(options.transfer.energyFraction) << '\n'
       << "environment " << options.visibility.cubeFaceSize << ' ' << options.visibility.terms << ' '
       << options.visibility.fresnelTerms << '\n'

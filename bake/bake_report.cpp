@@ -23,6 +23,7 @@ nlohmann::ordered_json optionsJson(const BakeOptions& o) {
             {"material", o.material},
             {"basis", o.basisCount},
             {"keep", o.transfer.keepFraction},
+            {"keep_min", o.transfer.minPerRow},
             {"energy", o.transfer.energyFraction},
             {"env_res", o.visibility.cubeFaceSize},
             {"env_terms", o.visibility.terms},
@@ -48,6 +49,8 @@ void writeBakeReport(const std::filesystem::path& path, const BakeOptions& optio
     j["render_vertices"] = r.renderVertices;
     j["raw_bytes"] = r.transfer.rawBytes;
     j["step1_bytes"] = r.transfer.step1Bytes;
+    j["step1_per_row"] = r.transfer.step1PerRow;
+    j["step1_budget"] = r.transfer.step1Floor ? "keep_min: keep x samples is fewer" : "keep x samples";
     j["step2_bytes"] = r.transfer.step2Bytes;
     j["sidecar_bytes"] = r.sidecarBytes;
     j["sidecar_file"] = r.sidecarFile.string();
@@ -79,11 +82,12 @@ std::string formatBakeSummary(const std::filesystem::path& stem, const BakeRepor
     std::snprintf(buf, sizeof buf,
                   "opal-bake: wrote %s.usda and %s\n"
                   "  samples %llu (%u charts of %ux%u), render vertices %llu\n"
-                  "  transfer  raw %.1f MiB | step 1 (Haar) %.1f MiB | step 2 (CDF 9/7) %.1f MiB | sidecar %.1f MiB\n"
+                  "  transfer  raw %.1f MiB | step 1 (Haar, %.0f per row%s) %.1f MiB | step 2 (CDF 9/7) %.1f MiB | sidecar %.1f MiB\n"
                   "  compression %.0fx, energy kept %.6f, transfer rel. RMSE %.4f\n"
                   "  %.1f s, peak memory %.0f MiB\n",
                   stem.string().c_str(), r.sidecarFile.string().c_str(), (unsigned long long)r.samples, r.charts, r.grid,
-                  r.grid, (unsigned long long)r.renderVertices, mib(r.transfer.rawBytes), mib(r.transfer.step1Bytes),
+                  r.grid, (unsigned long long)r.renderVertices, mib(r.transfer.rawBytes), r.transfer.step1PerRow,
+                  r.transfer.step1Floor ? ": the --keep-min floor" : "", mib(r.transfer.step1Bytes),
                   mib(r.transfer.step2Bytes), mib(r.sidecarBytes),
                   r.sidecarBytes ? double(r.transfer.rawBytes) / double(r.sidecarBytes) : 0.0, r.transfer.energyKept,
                   r.transferRelRmse, total, mib(r.peakRssBytes));

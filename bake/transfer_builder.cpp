@@ -50,20 +50,20 @@ std::vector<double> relativeEigenvalues(const ProfileBasis& basis) {
     return relative;
 }
 
-// How many Haar coefficients a row of each T_k keeps: keepFraction of the row on average
-// over k (so keepFraction x N x K per output sample in all), split in proportion to
+// How many Haar coefficients a row of each T_k keeps: averagePerRow on average over k
+// (TransferSettings says how it is chosen), split in proportion to
 // (lambda_k / lambda_1)^(1/4): T_k contributes to L = sum_k s_k T_k E with s_k of RMS
 // size sqrt(lambda_k), so the first matrices need their rows kept more finely than the
 // last. At least one per row, at most N. Measured at the bake's defaults (16,384 samples), transfer
 // error with an equal split / this one: bunny 1.06 / 0.87%, Spot 0.82 / 0.67%, candle
 // 0.72 / 0.57%, sidecars within 8%; exponent 1/2 starves the middle k (bunny 1.51%).
-std::vector<std::uint32_t> step1Budgets(double keepFraction, std::size_t n, const ProfileBasis& basis) {
+std::vector<std::uint32_t> step1Budgets(double averagePerRow, std::size_t n, const ProfileBasis& basis) {
     std::vector<double> share = relativeEigenvalues(basis);
     for (double& s : share) s = std::pow(s, 0.25);
     // Water-filling: a matrix's share is capped at the whole row (N) and what it cannot take
     // goes to the others in the same proportions, so keep 1 keeps every row whole.
     const double rowLength = double(n);
-    double budget = keepFraction * rowLength * double(share.size());
+    double budget = std::min(averagePerRow, rowLength) * double(share.size());
     std::vector<double> count(share.size(), 0.0);
     std::vector<bool> full(share.size(), false);
     for (bool capped = true; capped;) {
@@ -402,7 +402,9 @@ CompressedTransfer buildTransfer(std::span<const SurfaceSample> samples, const C
 
     const SamplesMm mm = toMillimetres(samples, unitsPerMm, basis);
     const BasisLookup lookup(basis);
-    const std::vector<std::uint32_t> perRow = step1Budgets(settings.keepFraction, n, basis);
+    const double fractionPerRow = settings.keepFraction * double(n);
+    const double averagePerRow = std::max(fractionPerRow, double(settings.minPerRow));
+    const std::vector<std::uint32_t> perRow = step1Budgets(averagePerRow, n, basis);
     std::vector<Step1Rows> step1 = compressLightDimension(mm, layout, lookup, perRow, progress, cancel);
 
     double energyKept = 1.0;
@@ -419,6 +421,9 @@ CompressedTransfer buildTransfer(std::span<const SurfaceSample> samples, const C
         for (const SparseMatrix& m : out.perBasis) stats->step2NonZeros += m.nonZeros();
         stats->step2Bytes = stats->step2NonZeros * entryBytes;
         stats->energyKept = energyKept;
+        stats->step1PerRow = 0.0;
+        for (std::uint32_t p : perRow) stats->step1PerRow += double(p) / double(perRow.size());
+        stats->step1Floor = fractionPerRow < double(settings.minPerRow);
     }
     return out;
 }

@@ -69,6 +69,10 @@ int main(int argc, char** argv) {
     app.add_option("--keep", options.transfer.keepFraction, "step 1: fraction of Haar coefficients kept per row")
         ->check(CLI::Range(1e-6, 1.0))
         ->capture_default_str();
+    app.add_option("--keep-min", options.transfer.minPerRow,
+                   "step 1: but at least this many Haar coefficients per row (on average over the basis)")
+        ->check(CLI::Range(1u, 1u << 30))
+        ->capture_default_str();
     app.add_option("--energy", options.transfer.energyFraction,
                    "step 2: fraction of the weighted CDF 9/7 energy kept; the transfer's relative error is about "
                    "sqrt(1 - energy)")

@@ -235,9 +235,10 @@ TEST_F(ExactCandle, ErrorGrowsAsEitherStepKeepsLess) {
     const double exactError = relativeError(a.transfer, a, *irradiance_, *exact_);
     EXPECT_LE(exactError, 1e-5);
 
-    const auto build = [&](double keep, double energy, TransferStats* stats) {
-        return buildTransfer(a.samples, a.layout, a.unitsPerMm, a.basis, TransferSettings{keep, energy}, nullptr,
-                             CancelToken{}, stats);
+    // minPerRow 1: the fraction alone sets step 1's budget (the floor is checked below).
+    const auto build = [&](double keep, double energy, TransferStats* stats, std::uint32_t minPerRow = 1) {
+        return buildTransfer(a.samples, a.layout, a.unitsPerMm, a.basis, TransferSettings{keep, energy, minPerRow},
+                             nullptr, CancelToken{}, stats);
     };
     const std::size_t n = a.samples.size();
     const std::uint64_t K = std::uint64_t(a.basis.K());
@@ -258,6 +259,20 @@ TEST_F(ExactCandle, ErrorGrowsAsEitherStepKeepsLess) {
         EXPECT_NEAR(stats.energyKept, 1.0, 1e-12);
     }
     EXPECT_GT(previous, 1e-3) << "keeping 3% of the Haar coefficients should cost visible accuracy";
+
+    // The floor: a fraction below minPerRow / N keeps minPerRow per row, the same transfer
+    // as asking for that fraction.
+    {
+        const std::uint32_t floor = std::uint32_t(n / 8);
+        TransferStats floored, fraction;
+        const CompressedTransfer a1 = build(0.001, 1.0, &floored, floor);
+        const CompressedTransfer a2 = build(double(floor) / double(n), 1.0, &fraction);
+        EXPECT_TRUE(floored.step1Floor);
+        EXPECT_FALSE(fraction.step1Floor);
+        EXPECT_EQ(floored.step1Bytes, fraction.step1Bytes);
+        EXPECT_NEAR(floored.step1PerRow, double(floor), double(K));  // each k's share rounded up
+        for (std::size_t k = 0; k < a1.perBasis.size(); ++k) EXPECT_EQ(a1.perBasis[k].values, a2.perBasis[k].values);
+    }
 
     // Step 2 alone (keep 1): the error grows as less 9/7 energy is kept, and the energy
     // actually kept reaches the target and falls with it.
