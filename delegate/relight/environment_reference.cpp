@@ -103,19 +103,24 @@ std::vector<float> EnvironmentReference::irradiance(const EnvironmentLight& dome
                 traceVisibility(i, own.bits, own);
                 bits = own.bits;
             }
-            const Imath::V3f& n = asset_->samples[i].normal;
-            double sum[3] = {0.0, 0.0, 0.0};
-            for (std::size_t w = 0; w < bits.size(); ++w)
-                for (std::uint64_t word = bits[w]; word != 0; word &= word - 1) {
-                    const std::size_t t = w * 64 + std::size_t(std::countr_zero(word));
-                    const double mu = double(n.dot(directions_[t]));  // > 0: the bit says so
-                    const double weight = fresnelTransmittance(eta, mu) * mu * solidAngles_[t];
-                    for (int c = 0; c < 3; ++c) sum[c] += weight * double(radiance[t * 3 + c]);
-                }
-            for (int c = 0; c < 3; ++c) e[i * 3 + c] = float(sum[c]);
+            sampleIrradiance(asset_->samples[i].normal, bits, radiance, eta, std::span<float, 3>(e.data() + i * 3, 3));
         }
     });
     return e;
+}
+
+// sum over the visible texels t of L_t F_t(eta, mu_t) mu_t dOmega_t, in double.
+void EnvironmentReference::sampleIrradiance(const Imath::V3f& normal, std::span<const std::uint64_t> bits,
+                                            std::span<const float> radiance, double eta, std::span<float, 3> e) const {
+    double total[3] = {0.0, 0.0, 0.0};
+    for (std::size_t w = 0; w < bits.size(); ++w)
+        for (std::uint64_t word = bits[w]; word != 0; word &= word - 1) {
+            const std::size_t t = w * 64 + std::size_t(std::countr_zero(word));
+            const double mu = double(normal.dot(directions_[t]));  // > 0: the bit says so
+            const double weight = fresnelTransmittance(eta, mu) * mu * solidAngles_[t];
+            for (int c = 0; c < 3; ++c) total[c] += weight * double(radiance[t * 3 + c]);
+        }
+    for (int c = 0; c < 3; ++c) e[std::size_t(c)] = float(total[c]);
 }
 
 std::size_t EnvironmentReference::memoryBytes() const {

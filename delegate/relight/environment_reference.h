@@ -69,6 +69,9 @@ private:
     // Bit t of `bits` (wordsPerSample() words): sample i sees the centre of texel t above its
     // horizon.
     void traceVisibility(std::size_t i, std::span<std::uint64_t> bits, TraceScratch& scratch) const;
+    // One sample's E over the texels its bits mark: radiance is texels x 3.
+    void sampleIrradiance(const Imath::V3f& normal, std::span<const std::uint64_t> bits, std::span<const float> radiance,
+                          double eta, std::span<float, 3> e) const;
     std::size_t wordsPerSample() const { return (std::size_t(cube_.texels()) + 63) / 64; }
 
     std::shared_ptr<const TranslucentAsset> asset_;
