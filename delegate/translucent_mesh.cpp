@@ -196,13 +196,14 @@ void TranslucentMesh::updateRadiance(bool reference, int primId, CommitStats& st
         }
         stats.materialMs += clock.ms();
     } else {
-        // Ground truth: the same lights' exact E (F_t(eta, .) per light, not its moment
-        // fit), the exact dipole over every pair of samples, the material as requested.
+        // Ground truth: the same lights' true E (F_t(eta, .) per light, not its moment fit;
+        // domes integrated over the hemisphere, not through the baked vectors), the exact
+        // dipole over every pair of samples, the material as requested.
         const Stopwatch clock;
         const Material& m = material_.subsurface;
         std::vector<float> exact, gathered;
         try {
-            exact = irradiance_->exactIrradiance(m.eta);
+            exact = irradiance_->referenceIrradiance(m.eta);
             gathered = referenceGather(*desc_.asset, m, exact);
         } catch (const Error& e) {
             fail(e.what());

@@ -10,7 +10,8 @@
 //   a light's version       that light's E only (setLight / removeLight)
 //   any E change            RelightEngine::setIrradiance (the sparse products)
 //   material binding/values RelightEngine::setMaterial only: O(K N), no products
-//   opal:reference          the exact gather instead of the engine (reference_gather.h)
+//   opal:reference          the exact gather instead of the engine (reference_gather.h), from
+//                           the true E (domes: environment_reference.h)
 //
 // An invisible mesh computes nothing and is relit in full when shown again.
 #pragma once

@@ -41,6 +41,7 @@ MeshIrradiance::MeshIrradiance(std::shared_ptr<const TranslucentAsset> asset, co
 
 void MeshIrradiance::compute(Contribution& c, const RayScene* scene) {
     c.moments = IrradianceMoments(std::uint32_t(placed_.positions.size()), terms_);
+    c.referenceE.clear();
     if (const auto* light = std::get_if<AnalyticLight>(&c.source)) {
         const float offset = scene ? kShadowOffset * scene->extent() : 0.0f;
         c.arrivals = lightArrivals(*light, placed_, scene, offset);
@@ -68,7 +69,7 @@ void MeshIrradiance::setTransform(const Imath::M44d& objectToWorld, const RaySce
 }
 
 void MeshIrradiance::setLight(const hd::SdfPath& id, const AnalyticLight& light, const RayScene& scene) {
-    Contribution c{light, {}, {}};
+    Contribution c{light, {}, {}, {}, 0.0};
     compute(c, &scene);
     lights_.insert_or_assign(id, std::move(c));
     resum();
@@ -76,7 +77,7 @@ void MeshIrradiance::setLight(const hd::SdfPath& id, const AnalyticLight& light,
 
 void MeshIrradiance::setLight(const hd::SdfPath& id, std::shared_ptr<const EnvironmentLight> light) {
     if (!light) throw Error("irradiance: dome light " + id + " has no map");
-    Contribution c{std::move(light), {}, {}};
+    Contribution c{std::move(light), {}, {}, {}, 0.0};
     compute(c, nullptr);
     lights_.insert_or_assign(id, std::move(c));
     resum();
@@ -92,16 +93,36 @@ void MeshIrradiance::updateShadows(const RayScene& scene) {
     resum();
 }
 
-std::vector<float> MeshIrradiance::exactIrradiance(double eta) const {
+std::vector<float> MeshIrradiance::analyticIrradiance(double eta) const {
     std::vector<float> rgb(placed_.positions.size() * 3, 0.0f);
+    for (const auto& [id, contribution] : lights_)
+        if (std::holds_alternative<AnalyticLight>(contribution.source)) addExactIrradiance(contribution.arrivals, eta, rgb);
+    return rgb;
+}
+
+std::vector<float> MeshIrradiance::exactIrradiance(double eta) const {
+    std::vector<float> rgb = analyticIrradiance(eta);
     const std::vector<double> c = fresnelMoments(eta, int(terms_));
     for (const auto& [id, contribution] : lights_) {
-        if (std::holds_alternative<AnalyticLight>(contribution.source)) {
-            addExactIrradiance(contribution.arrivals, eta, rgb);
-        } else {
-            const std::vector<float> dome = contribution.moments.combine(c);
-            for (std::size_t j = 0; j < rgb.size(); ++j) rgb[j] += dome[j];
+        if (std::holds_alternative<AnalyticLight>(contribution.source)) continue;
+        const std::vector<float> dome = contribution.moments.combine(c);
+        for (std::size_t j = 0; j < rgb.size(); ++j) rgb[j] += dome[j];
+    }
+    return rgb;
+}
+
+std::vector<float> MeshIrradiance::referenceIrradiance(double eta) {
+    std::vector<float> rgb = analyticIrradiance(eta);
+    for (auto& [id, contribution] : lights_) {
+        const auto* dome = std::get_if<std::shared_ptr<const EnvironmentLight>>(&contribution.source);
+        if (!dome) continue;
+        if (contribution.referenceE.empty() || contribution.referenceEta != eta) {
+            if (!reference_)
+                reference_ = std::make_unique<const EnvironmentReference>(asset_, EnvironmentReference::faceSizeFor(*asset_));
+            contribution.referenceE = reference_->irradiance(**dome, objectToWorld_, eta);
+            contribution.referenceEta = eta;
         }
+        for (std::size_t j = 0; j < rgb.size(); ++j) rgb[j] += contribution.referenceE[j];
     }
     return rgb;
 }
@@ -110,8 +131,10 @@ std::size_t MeshIrradiance::memoryBytes() const {
     const auto moments = [](const IrradianceMoments& m) { return m.values.capacity() * sizeof(float); };
     std::size_t bytes = (placed_.positions.capacity() + placed_.normals.capacity()) * sizeof(Imath::V3f) + moments(total_);
     if (environment_) bytes += environment_->memoryBytes();
+    if (reference_) bytes += reference_->memoryBytes();
     for (const auto& [path, contribution] : lights_)
-        bytes += moments(contribution.moments) + contribution.arrivals.capacity() * sizeof(LightArrival);
+        bytes += moments(contribution.moments) + contribution.arrivals.capacity() * sizeof(LightArrival) +
+                 contribution.referenceE.capacity() * sizeof(float);
     return bytes;
 }
 

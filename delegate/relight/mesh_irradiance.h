@@ -9,6 +9,7 @@
 
 #include "delegate/relight/analytic_light.h"
 #include "delegate/relight/environment_light.h"
+#include "delegate/relight/environment_reference.h"
 #include "delegate/relight/environment_vectors.h"
 #include "delegate/relight/fresnel_response.h"
 #include "delegate/hd/types.h"
@@ -41,9 +42,15 @@ public:
     // sum over lights of E_m(x_i): what RelightEngine::setIrradiance takes.
     const IrradianceMoments& moments() const { return total_; }
     // E(x_i; eta) with the exact F_t(eta, .) for analytic lights and sum_m c_m(eta) E_m for
-    // domes (their Fresnel factor is only known in moment form): samples x 3, the input of
-    // the reference gather.
+    // domes (the engine's baked vectors, F_t in moment form): samples x 3, the engine's own
+    // E but for the analytic lights' Fresnel fit.
     std::vector<float> exactIrradiance(double eta) const;
+    // The true E(x_i; eta), the reference mode's input to the reference gather: analytic
+    // lights as exactIrradiance, domes by the brute-force hemisphere integral of
+    // environment_reference.h instead of the baked vectors. Each dome's E is kept until the
+    // dome, the transform or eta changes; the asset's visibility is traced at the first
+    // call with a dome and kept (so an eta edit or a dome rotation traces no rays).
+    std::vector<float> referenceIrradiance(double eta);
     // Bytes held: the placed samples, each light's moments and arrivals, the dome vectors.
     std::size_t memoryBytes() const;
 
@@ -53,9 +60,12 @@ private:
         Source source;
         IrradianceMoments moments;
         std::vector<LightArrival> arrivals;  // analytic lights: for exactIrradiance
+        std::vector<float> referenceE;       // domes: the last referenceIrradiance, at referenceEta
+        double referenceEta = 0.0;
     };
     void compute(Contribution& contribution, const RayScene* scene);
     void resum();
+    std::vector<float> analyticIrradiance(double eta) const;
 
     std::shared_ptr<const TranslucentAsset> asset_;
     Imath::M44d objectToWorld_;
@@ -63,6 +73,7 @@ private:
     FresnelResponse response_;
     PlacedSamples placed_;
     std::unique_ptr<const EnvironmentVectors> environment_;  // built with the first dome
+    std::unique_ptr<const EnvironmentReference> reference_;   // built with the first referenceIrradiance
     std::map<hd::SdfPath, Contribution> lights_;
     IrradianceMoments total_;
 };

@@ -96,6 +96,41 @@ TEST(Dome, AUniformDomeIsTheBackgroundAndLightsTheSphereEvenly) {
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(centre[c], fr * sky[c], 1e-5);
 }
 
+TEST(Dome, ReferenceModeIntegratesTheDomeInsteadOfTheBakedVectors) {
+    // The sphere with baked vectors that claim it hides its whole sky: the engine's E is 0,
+    // while the reference integrates the sky against the mesh itself, which is convex and
+    // sees every sample's hemisphere: E = 2 pi int F_t mu dmu x sky.
+    auto blind = std::make_shared<TranslucentAsset>(*test::sharedSphere());
+    blind->environment = test::environmentTransfer(*blind, blind->environment.cubeFaceSize, 3,
+                                                   [](std::size_t, const Imath::V3f&) { return false; });
+    const Rgb sky(0.5, 0.7, 1.0);
+    OpalRenderDelegate delegate;
+    test::CountingScene scene;
+    hd::RenderIndex index{delegate};
+    scene.meshes[test::SpherePath] = hd::MeshDesc{blind, Imath::M44d(), {}, true};
+    index.insertRprim(hd::PrimType::TranslucentMesh, scene, test::SpherePath);
+    test::addCamera(scene, index);
+    test::addLight(scene, index, SkyPath, uniformDome(sky));
+    index.sync();
+    const double expectedE = skyIrradiance(blind->defaultMaterial.eta);
+    for (bool reference : {false, true}) {
+        delegate.setRenderSetting("opal:reference", reference);
+        const test::Aovs a = test::renderAovs(delegate, index, test::CameraPath, W, H);
+        int hits = 0;
+        for (int y = 0; y < H; ++y)
+            for (int x = 0; x < W; ++x) {
+                if (!test::interior(a, x, y)) continue;
+                ++hits;
+                for (int c = 0; c < 3; ++c) {
+                    const double expected = reference ? expectedE * sky[c] : 0.0;
+                    EXPECT_NEAR(a.at("irradiance", x, y)[c], expected, 0.005 * expectedE * sky[c])
+                        << (reference ? "reference" : "engine") << " at " << x << ", " << y;
+                }
+            }
+        EXPECT_GT(hits, 100);
+    }
+}
+
 TEST(Dome, TheBackgroundCanBeTransparentOrHidden) {
     DomeScene transparent(uniformDome({1.0, 1.0, 1.0}), {{"opal:transparentBackground", true}});
     const test::Aovs t = transparent.render();
