@@ -92,12 +92,9 @@ std::vector<MeshSpec> requestedMeshes(const Options& options) {
     return specs;
 }
 
-bool available(const MeshSpec& mesh) {
+bool exists(const MeshSpec& mesh) {
     std::error_code ec;
-    if (mesh.input.rfind("builtin:", 0) == 0 || fs::is_regular_file(mesh.input, ec)) return true;
-    std::printf("skipping %s: %s not found (set OPAL_SHARED_ASSETS to the shared assets folder)\n", mesh.label.c_str(),
-                mesh.input.c_str());
-    return false;
+    return mesh.input.rfind("builtin:", 0) == 0 || fs::is_regular_file(mesh.input, ec);
 }
 
 fs::path bakeCache(const Options& options) {
@@ -200,8 +197,11 @@ Json targetsJson(const AccuracyTargets& t) {
             {"negative_fraction", t.negativeFraction}};
 }
 
+// The table's rows as printed while measuring, printed again whole at the end (bake
+// progress comes between a run's rows).
 struct Tally {
     std::size_t images = 0, passed = 0;
+    std::vector<std::string> rows;
 };
 
 // One row of the table: the engine's and the reference's view of one material and case.
@@ -216,10 +216,13 @@ Json measureImage(const Subject& s, const std::string& materialName, const std::
     const std::vector<std::string> missed = missedTargets(a, AccuracyTargets{});
     ++tally.images;
     tally.passed += missed.empty();
-    std::printf("%-10s %7zu %-8s %-11s %7zu %9.4f %8.4f %8.4f %8.4f %8.4f %9.4f  %s\n", s.label.c_str(),
-                s.asset->samples.size(), materialName.c_str(), lightCase.c_str(), a.pixels, a.relativeRmse,
-                a.luminance.median, a.luminance.p95, a.darkerHalf.p95, a.chromaticity.p95, a.negativeFraction,
-                missed.empty() ? "PASS" : "FAIL");
+    char row[256];
+    std::snprintf(row, sizeof row, "%-10s %7zu %-8s %-11s %7zu %9.4f %8.4f %8.4f %8.4f %8.4f %9.4f  %s",
+                  s.label.c_str(), s.asset->samples.size(), materialName.c_str(), lightCase.c_str(), a.pixels,
+                  a.relativeRmse, a.luminance.median, a.luminance.p95, a.darkerHalf.p95, a.chromaticity.p95,
+                  a.negativeFraction, missed.empty() ? "PASS" : "FAIL");
+    tally.rows.push_back(row);
+    std::printf("%s\n", row);
     std::fflush(stdout);
     Json j = {{"mesh", s.label},
               {"source", s.source},
@@ -285,13 +288,30 @@ int run(const Options& options) {
     Json bakes = Json::array(), images = Json::array();
     Tally tally;
     bool failed = false;
-    std::vector<Subject> subjects;
-    for (const fs::path& file : options.assets) subjects.push_back(readSubject(file));
+    printHeader();
+    // One asset in memory at a time: each is measured before the next is read or baked.
+    const auto measure = [&](const Subject& s) {
+        Json bake = s.bake;
+        bake["mesh"] = s.label;
+        bake["samples"] = s.asset->samples.size();
+        bakes.push_back(bake);
+        measureSubject(s, options, images, tally);
+    };
+    for (const fs::path& file : options.assets) measure(readSubject(file));
     for (const MeshSpec& mesh : requestedMeshes(options)) {
-        if (!available(mesh)) continue;
+        if (!exists(mesh)) {
+            if (options.meshes.empty()) {  // a default mesh: the shared assets may be elsewhere
+                std::printf("skipping %s: %s not found (set OPAL_SHARED_ASSETS to the shared assets folder)\n",
+                            mesh.label.c_str(), mesh.input.c_str());
+            } else {
+                std::fprintf(stderr, "opal-bench accuracy: --mesh %s: no such file\n", mesh.input.c_str());
+                failed = true;
+            }
+            continue;
+        }
         for (std::uint64_t samples : options.samples) {
             try {
-                subjects.push_back(bakedSubject(mesh, samples, cache));
+                measure(bakedSubject(mesh, samples, cache));
             } catch (const std::exception& e) {
                 std::fprintf(stderr, "opal-bench accuracy: %s\n", e.what());
                 failed = true;
@@ -299,13 +319,7 @@ int run(const Options& options) {
         }
     }
     printHeader();
-    for (const Subject& s : subjects) {
-        Json bake = s.bake;
-        bake["mesh"] = s.label;
-        bake["samples"] = s.asset->samples.size();
-        bakes.push_back(bake);
-        measureSubject(s, options, images, tally);
-    }
+    for (const std::string& row : tally.rows) std::printf("%s\n", row.c_str());
     std::printf("\n%zu of %zu images meet every target%s\n", tally.passed, tally.images,
                 tally.passed == tally.images ? "" : " (a measurement: the exit code does not depend on it)");
     if (!options.jsonFile.empty()) {
