@@ -24,9 +24,13 @@
 // Buhler's hierarchical dipole (bench/jensen_buhler.h) on the reference's edit, same exact E,
 // same material, at maxError 0.05 (pbrt-v2's default) and a sweep 0.02 to 0.5: its time and
 // its error against the gather, beside the engine's.
+#include "bench/cached_bake.h"
+#include "bench/compression_sweep.h"
 #include "bench/cpu_time.h"
+#include "bench/error_time_plot.h"
 #include "bench/relight_reference.h"
 #include "bench/relight_scene.h"
+#include "bench/shared_assets.h"
 #include "bench/subcommand.h"
 
 #include "delegate/output/color_config.h"
@@ -86,15 +90,15 @@ struct Options {
     fs::path preview;
     std::vector<std::string> cases = {"material", "light", "environment", "frame"};
     std::string peer;  // "jensen-buhler" or empty
+    // The engine's compression sweep for the error-against-time figure (bench/compression_sweep.h).
+    std::string sweepMesh;
+    std::vector<double> sweepKeeps = {0.003, 0.01, 0.03, 0.1};
+    std::vector<double> sweepEnergies = {0.999, 0.9999, 0.99999};
+    fs::path sweepDir;  // default: the temporary folder
+    fs::path plot;
 
     bool runs(std::string_view name) const { return std::find(cases.begin(), cases.end(), name) != cases.end(); }
 };
-
-// ../shared/assets beside the source tree, or $OPAL_SHARED_ASSETS (as opal-bench bake).
-fs::path sharedAssets() {
-    if (const char* env = std::getenv("OPAL_SHARED_ASSETS"); env && *env) return env;
-    return fs::path(__FILE__).parent_path().parent_path().parent_path() / "shared" / "assets";
-}
 
 double millisecondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -538,6 +542,81 @@ Json resultsJson(const RunInfo& info, const std::vector<CaseResult>& cases) {
               {"load_average_after", info.loadAfter}}}};
 }
 
+// The engine's point for a point-light move on one bake: the median time of the light case
+// (as above, marble), and its relative error against the gather for one more move, with the
+// peer's maxError sweep `peerMaxErrors` on the same move (its error needs the peer's
+// machinery; the peer's result does not depend on the engine's compression).
+struct SweepMeasurement {
+    CaseResult light;
+    double engineError = 0.0;
+};
+
+SweepMeasurement measureLightMove(const std::shared_ptr<const TranslucentAsset>& asset, const Options& options,
+                                  std::vector<double> peerMaxErrors) {
+    Session s(asset, preset("marble"), "");
+    s.index.sync();
+    SweepMeasurement m{lightCase(s, options.repeats)};
+    RelightReference reference(s.scene, asset, nullptr, preset("marble"), options.referenceOutputs,
+                               std::move(peerMaxErrors));
+    m.light.reference = reference.keyLightMove(s.scene.keyLightAt(options.repeats + 2));
+    m.engineError = m.light.reference->peer->engineRelativeRmse;
+    return m;
+}
+
+// Bakes the asset's mesh at each compression setting and measures the engine on each (the
+// peer's sweep on the first); returns the JSON of every point and fills the figure's series.
+Json runSweep(const Options& options, const TranslucentAsset& asset, std::vector<ErrorTimeSeries>& series) {
+    if (asset.bake.source != options.sweepMesh)
+        std::printf("opal-bench relight: note: the asset was baked from '%s', the sweep bakes '%s'\n",
+                    asset.bake.source.c_str(), options.sweepMesh.c_str());
+    const fs::path dir = options.sweepDir.empty() ? fs::temp_directory_path() / "opal-bench-relight-sweep"
+                                                  : options.sweepDir;
+    ErrorTimeSeries engine{"engine, compression sweep", {}, false}, shipped{"engine, shipped defaults", {}, false},
+        peer{"Jensen-Buhler, maxError sweep", {}, true};
+    const TransferSettings defaults;
+    Json points = Json::array(), peerPoints = Json::array();
+    const std::string label = bakeLabel(options.sweepMesh);
+    for (const TransferSettings& setting : compressionSettings(options.sweepKeeps, options.sweepEnergies)) {
+        const CachedBake bake = bakeOrReuse(sweepBakeOptions(asset, options.sweepMesh, setting), label, dir);
+        if (bake.asset->samples.size() != asset.samples.size())
+            throw Error("--sweep-mesh " + options.sweepMesh + " baked to " + std::to_string(bake.asset->samples.size()) +
+                        " samples, the asset has " + std::to_string(asset.samples.size()) +
+                        ": pass the mesh the asset was baked from");
+        const bool first = points.empty();
+        std::vector<double> maxErrors = {kPeerDefaultMaxError};
+        if (first) maxErrors.assign(std::begin(kPeerMaxErrors), std::end(kPeerMaxErrors));
+        const SweepMeasurement m = measureLightMove(bake.asset, options, std::move(maxErrors));
+        const double ms = m.light.times.median();
+        engine.points.push_back({ms, m.engineError});
+        if (setting.keepFraction == defaults.keepFraction && setting.energyFraction == defaults.energyFraction)
+            shipped.points.push_back({ms, m.engineError});
+        std::printf("opal-bench relight: sweep keep %g energy %g: light move %s ms, relative RMSE %.2e (%s)\n",
+                    setting.keepFraction, setting.energyFraction, msText(ms).c_str(), m.engineError,
+                    bake.reused ? "cached bake" : "baked");
+        std::fflush(stdout);
+        points.push_back({{"keep", setting.keepFraction},
+                          {"energy", setting.energyFraction},
+                          {"light_move_median_ms", ms},
+                          {"light_move_times_ms", m.light.times.ms},
+                          {"relative_rmse", m.engineError},
+                          {"layer", bake.layer.string()},
+                          {"bake", bake.report}});
+        if (!first) continue;
+        for (const PeerPoint& p : m.light.reference->peer->sweep) {
+            peer.points.push_back({peerWithIrradianceMs(m.light, p), p.relativeRmse});
+            peerPoints.push_back({{"max_error", p.maxError},
+                                  {"edit_with_irradiance_ms", peerWithIrradianceMs(m.light, p)},
+                                  {"relative_rmse", p.relativeRmse}});
+        }
+    }
+    series = {engine, shipped, peer};
+    return {{"mesh", options.sweepMesh},
+            {"material", "marble"},
+            {"edit", "point-light move"},
+            {"engine", points},
+            {"peer", peerPoints}};
+}
+
 // The environment map, read as the delegate reads it (OpenImageIO, OCIO to the working
 // space); null when the asset has no environment transfer.
 std::shared_ptr<const LatLongMap> loadDome(const fs::path& env, const TranslucentAsset& asset) {
@@ -603,13 +682,25 @@ int run(const Options& options) {
     printTable(cases);
     printBreakdown(cases);
     printPeer(cases);
+    Json sweep;
+    if (!options.sweepMesh.empty()) {
+        std::vector<ErrorTimeSeries> series;
+        sweep = runSweep(options, *asset, series);
+        if (!options.plot.empty()) {
+            writeErrorTimePlot(options.plot, series,
+                               "point-light move, " + std::to_string(info.samples) + " samples: error vs time");
+            std::printf("opal-bench relight: wrote the error-against-time figure to %s\n", options.plot.c_str());
+        }
+    }
     std::printf("\nframe: %.1f%% of the pixels hit the asset; %u hardware threads; load average %.1f before, %.1f after\n",
                 100.0 * info.coverage, std::thread::hardware_concurrency(), info.loadBefore, info.loadAfter);
     if (info.extrapolated)
         std::printf("reference: gather extrapolated from %zu of %zu outputs (exactly linear in outputs)\n",
                     info.referenceOutputs, info.samples);
     if (!options.jsonFile.empty()) {
-        writeFileAtomically(options.jsonFile, resultsJson(info, cases).dump(2) + "\n");
+        Json results = resultsJson(info, cases);
+        if (!sweep.is_null()) results["compression_sweep"] = sweep;
+        writeFileAtomically(options.jsonFile, results.dump(2) + "\n");
         std::printf("wrote %s\n", options.jsonFile.c_str());
     }
     return 0;
@@ -620,7 +711,7 @@ int runRelightBench(int argc, char** argv) {
                  "reference",
                  "opal-bench relight"};
     Options options;
-    options.env = sharedAssets() / "envmaps" / "studio_small_05_1k.hdr";
+    options.env = studioDomeMap();
     app.add_option("--asset", options.asset, "the baked asset (ASSET.usda)")->required();
     app.add_option("--env", options.env, "the dome's lat-long map (default: studio_small_05_1k.hdr in "
                                          "$OPAL_SHARED_ASSETS/envmaps, else ../shared/assets beside the source tree)");
@@ -637,9 +728,30 @@ int runRelightBench(int argc, char** argv) {
     app.add_option("--peer", options.peer, "also run the classic peer on the material and light edits: Jensen and "
                                            "Buhler's hierarchical dipole (maxError 0.05 and a sweep 0.02 to 0.5)")
         ->check(CLI::IsMember({"jensen-buhler"}));
+    app.add_option("--sweep-mesh", options.sweepMesh,
+                   "with --peer: also bake this mesh (the asset's own: same samples, level, scale, seed) at each "
+                   "compression setting of the sweep, and time a point-light move and measure its error on each");
+    app.add_option("--sweep-keep", options.sweepKeeps, "the sweep's step-1 keep fractions (at the default energy)")
+        ->check(CLI::Range(1e-6, 1.0))
+        ->capture_default_str();
+    app.add_option("--sweep-energy", options.sweepEnergies, "the sweep's step-2 energy fractions (at the default keep)")
+        ->check(CLI::Range(0.5, 1.0))
+        ->capture_default_str();
+    app.add_option("--sweep-dir", options.sweepDir, "cache the sweep's bakes here (default: the temporary folder)");
+    app.add_option("--plot", options.plot, "with --sweep-mesh: write the error-against-time figure (PNG) of the "
+                                           "engine's sweep and the peer's maxError sweep here");
     app.add_option("--preview", options.preview, "also write the timed frame's color (OCIO default view) to this "
                                                  ".png or .jpg");
     CLI11_PARSE(app, argc, argv);
+    if (!options.sweepMesh.empty() && options.peer.empty()) {
+        std::fprintf(stderr, "opal-bench relight: --sweep-mesh needs --peer jensen-buhler (the errors come from its "
+                             "comparison with the gather)\n");
+        return 2;
+    }
+    if (!options.plot.empty() && options.sweepMesh.empty()) {
+        std::fprintf(stderr, "opal-bench relight: --plot needs --sweep-mesh (the engine's points)\n");
+        return 2;
+    }
     try {
         return run(options);
     } catch (const std::exception& e) {

@@ -48,7 +48,8 @@ RelightReference::RelightReference(const RelightScene& scene, std::shared_ptr<co
     }
     rays_.addMesh(asset_->mesh, Imath::M44d());
     rays_.commit();
-    irradiance_.setLight(RelightScene::KeyLightPath, AnalyticLight::fromDesc(scene.keyLight()), rays_);
+    if (scene.hasKeyLight())
+        irradiance_.setLight(RelightScene::KeyLightPath, AnalyticLight::fromDesc(scene.keyLight()), rays_);
     if (scene.hasDome())
         irradiance_.setLight(RelightScene::DomePath,
                              std::make_shared<const EnvironmentLight>(EnvironmentLight::fromDesc(domeMap_, scene.dome())));

@@ -3,6 +3,7 @@
 #include "schema/error.h"
 
 #include <Imath/ImathBox.h>
+#include <Imath/ImathMatrixAlgo.h>
 
 #include <algorithm>
 #include <cmath>
@@ -27,8 +28,8 @@ double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
 }  // namespace
 
 RelightScene::RelightScene(std::shared_ptr<const TranslucentAsset> asset, const Material& material,
-                           std::string domeFile, double aspect)
-    : asset_(std::move(asset)), domeFile_(std::move(domeFile)) {
+                           std::string domeFile, double aspect, Key key)
+    : asset_(std::move(asset)), domeFile_(std::move(domeFile)), key_(key) {
     if (!asset_ || asset_->mesh.points.empty()) throw Error("relight scene: the asset has no render mesh");
     for (const Imath::V3f& p : asset_->mesh.points) bounds_.extendBy(Imath::V3d(p));
     centre_ = bounds_.center();
@@ -40,7 +41,13 @@ RelightScene::RelightScene(std::shared_ptr<const TranslucentAsset> asset, const 
     keyLight_.kind = hd::LightKind::Sphere;
     keyLight_.treatAsPoint = true;
     keyLight_.intensity = std::pow(kLightDistance * radius_, 2) / std::numbers::pi;
-    keyLight_.transform = translation(keyLightPosition(0));
+    if (key_ == Key::Distant) {
+        // Normalized: E_perp = intensity whatever the angle.
+        keyLight_.kind = hd::LightKind::Distant;
+        keyLight_.normalize = true;
+        keyLight_.intensity = 1.0;
+    }
+    keyLight_ = keyLightAt(0);
 
     dome_.kind = hd::LightKind::Dome;
     dome_.textureFile = domeFile_;
@@ -76,7 +83,8 @@ Imath::V3d RelightScene::keyLightPosition(int step) const {
 
 void RelightScene::populate(hd::RenderIndex& index) const {
     index.insertSprim(hd::PrimType::Material, *this, MaterialPath);
-    index.insertSprim(hd::PrimType::SphereLight, *this, KeyLightPath);
+    if (key_ == Key::Point) index.insertSprim(hd::PrimType::SphereLight, *this, KeyLightPath);
+    if (key_ == Key::Distant) index.insertSprim(hd::PrimType::DistantLight, *this, KeyLightPath);
     if (hasDome()) index.insertSprim(hd::PrimType::DomeLight, *this, DomePath);
     index.insertSprim(hd::PrimType::Camera, *this, CameraPath);
     index.insertRprim(hd::PrimType::TranslucentMesh, *this, MeshPath);
@@ -89,7 +97,13 @@ void RelightScene::setMaterial(hd::RenderIndex& index, const Material& material)
 
 hd::LightDesc RelightScene::keyLightAt(int step) const {
     hd::LightDesc key = keyLight_;
-    key.transform = translation(keyLightPosition(step));
+    const Imath::V3d position = keyLightPosition(step);
+    if (key.kind == hd::LightKind::Distant) {
+        // -Z (the direction a distant light shines along) turned towards the centre.
+        key.transform = Imath::rotationMatrix(Imath::V3d(0.0, 0.0, -1.0), (centre_ - position).normalized());
+    } else {
+        key.transform = translation(position);
+    }
     return key;
 }
 
@@ -120,7 +134,7 @@ hd::MaterialDesc RelightScene::material(const hd::SdfPath& id) const {
 }
 
 hd::LightDesc RelightScene::light(const hd::SdfPath& id) const {
-    if (id == KeyLightPath) return keyLight_;
+    if (id == KeyLightPath && hasKeyLight()) return keyLight_;
     if (id == DomePath && hasDome()) return dome_;
     throw Error("relight scene: no light '" + id + "'");
 }

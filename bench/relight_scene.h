@@ -24,11 +24,16 @@ public:
     static inline const hd::SdfPath DomePath = "/World/Lights/Dome";
     static inline const hd::SdfPath CameraPath = "/World/Camera";
 
+    // The key light: a point light (a sphere prim treated as a point), a distant light
+    // shining from the point light's position towards the asset's centre, or none.
+    enum class Key { Point, Distant, None };
+
     // domeFile empty: no dome. The key light starts at keyLightPosition(0), the dome at 0
     // degrees, the material prim holds `material`; the camera frames the asset's bounding
-    // box in images of width / height = aspect.
+    // box in images of width / height = aspect. Either key light gives E_perp = 1 at the
+    // asset's centre.
     RelightScene(std::shared_ptr<const TranslucentAsset> asset, const Material& material, std::string domeFile,
-                 double aspect);
+                 double aspect, Key key = Key::Point);
 
     // Inserts every prim into `index` (all dirty).
     void populate(hd::RenderIndex& index) const;
@@ -48,6 +53,7 @@ public:
     Imath::V3d keyLightPosition(int step) const;
 
     bool hasDome() const { return !domeFile_.empty(); }
+    bool hasKeyLight() const { return key_ != Key::None; }
     const hd::LightDesc& keyLight() const { return keyLight_; }
     const hd::LightDesc& dome() const { return dome_; }
 
@@ -61,6 +67,7 @@ private:
 
     std::shared_ptr<const TranslucentAsset> asset_;
     std::string domeFile_;
+    Key key_ = Key::Point;
     Imath::Box3d bounds_;
     Imath::V3d centre_;
     double radius_ = 1.0;  // half the bounding box's diagonal
