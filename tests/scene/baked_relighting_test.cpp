@@ -1,18 +1,21 @@
-// The render delegate issue's accuracy criterion on assets baked here, through the real
-// bake: compressed relighting (RelightEngine) against the exact dipole gather
-// (referenceGather) under the same lights, relative RMSE over all samples and RGB <= 1%,
-// for a point light, a distant light and a dome with a procedural lat-long map, on a small
-// baked sphere and torus.
+// Accuracy at the shipped defaults, on small assets baked here through the real bake (a
+// sphere, a torus, the concave built-in candle): the relighting engine (RelightEngine)
+// against the exact dipole gather (referenceGather) for a point light, a distant light and
+// a dome with a procedural lat-long map, with issue 13's figures per sample
+// (bench/image_accuracy.h). What holds today is asserted: relative RMSE <= 1% for the
+// analytic lights, <= 3% for the dome (its target is 1%). Issue 13's other targets (95th
+// percentile of the relative luminance error <= 3%, chromaticity 95th percentile <= 0.005,
+// no negative radiance) are printed and not yet met: measured at 2,048 samples, luminance
+// p95 6-13%, chromaticity p95 0.007-0.05, and up to 30% of the candle's shadowed samples
+// negative under a point light. The compression's error is absolute (about 1e-3 of the
+// peak), so samples lit only through the profile's far tail carry large relative errors.
 //
-// Both sides get the same irradiance: E(x_i; eta) = sum_m c_m(eta) E_m(x_i), the one the
-// engine formed from MeshIrradiance's moments (RelightEngine::sampleIrradiance). What is
-// left is the engine's own approximation: the K = 12 PCA profile basis (docs/ARCHITECTURE.md#pca)
-// and the two-step wavelet compression of the transfer (#compression). The lossless transfer
-// (keep 1, energy 1), summed directly here, separates the two: lossless vs reference is
-// the basis alone, compressed vs lossless the compression alone. That the engine on a
-// lossless bake gives exactly that sum is checked on smaller bakes (a lossless bake of
-// 2,048 samples costs ~8 s; the sum well under one).
+// The lossless transfer (keep 1, energy 1), summed directly here, separates the PCA
+// profile basis (docs/ARCHITECTURE.md#pca) from the two-step wavelet compression
+// (#compression): lossless vs reference is the basis alone. That the engine on a lossless
+// bake gives exactly that sum is checked on smaller bakes.
 #include "bake/bake_pipeline.h"
+#include "bench/image_accuracy.h"
 #include "delegate/relight/mesh_irradiance.h"
 #include "raytrace/ray_scene.h"
 #include "delegate/relight/reference_gather.h"
@@ -29,6 +32,7 @@
 #include <cstring>
 #include <memory>
 #include <numbers>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -36,49 +40,41 @@
 namespace opal {
 namespace {
 
-// 2,048 samples = 2 charts of 32 x 32.
+// 2,048 samples = 2 charts of 32 x 32: small enough for a test, and the shipped defaults
+// must hold there too (bake/transfer_builder.h: TransferSettings::minPerRow).
 constexpr std::uint64_t kSamples = 2048;
-
-// The compression the test holds to 1%. Measured at 2,048 samples (compressed vs
-// reference, per light point / distant / dome; the basis alone is 0.05-0.06% throughout;
-// DISABLED_CompressionSweep re-measures):
-//   keep 0.01, energy 0.99995 (the defaults)  sphere 6.2 / 6.2 / 5.0%   torus 12.5 / 12.4 / 9.2%
-//   keep 0.03, energy 0.99995                 sphere 1.3 / 1.2 / 1.1%   torus 2.1 / 2.5 / 1.7%
-//   keep 0.1,  energy 0.9999                  sphere 0.48 / 0.43 / 0.43%  torus 0.80 / 0.80 / 0.67%
-//   keep 0.1,  energy 0.99995 (this test)     sphere 0.35 / 0.34 / 0.32%  torus 0.59 / 0.60 / 0.50%
-// Step 1's error falls as a row keeps more coefficients across the profile's footprint:
-// 1% of 2,048 samples is 21 per row, too few for these small bakes, while the same 1% of
-// 65,536 samples (655 per row) leaves the bunny at 0.67% (opal-bench bake).
-TransferSettings testedSettings() { return TransferSettings{0.1, TransferSettings{}.energyFraction}; }
 
 // ---- baking -------------------------------------------------------------------------
 
-// The control mesh is in mm (scene units = mm); the default material is marble, whose
-// diffusion length (1 / sigma_tr, 8.5 mm in red) is comparable to the objects' size.
-std::shared_ptr<const TranslucentAsset> bake(const ControlMesh& control, const std::string& name,
-                                             const TransferSettings& transfer, std::uint64_t samples) {
-    const test::ScratchDir dir;
-    test::writeText(dir / (name + ".obj"), test::objText(control));
+// The shipped defaults (BakeOptions{}) but for the sample count. Control meshes are in mm
+// (scene units = mm); the default material is marble, whose diffusion length (1 / sigma_tr,
+// 8.5 mm in red) is comparable to the objects' size.
+std::shared_ptr<const TranslucentAsset> bake(const std::string& input, std::uint64_t samples,
+                                             const TransferSettings& transfer = TransferSettings{}) {
     BakeOptions options;
-    options.input = (dir / (name + ".obj")).string();
-    options.level = 1;
+    options.input = input;
     options.samples = samples;
-    options.unitsPerMm = 1.0;
-    options.material = "marble";
-    options.basisCount = 12;
     options.transfer = transfer;
-    options.visibility.cubeFaceSize = 16;
-    options.visibility.terms = 64;
     return std::make_shared<const TranslucentAsset>(bakeAsset(options, nullptr, CancelToken{}, nullptr));
 }
 
 struct Shape {
     const char* name;
-    ControlMesh control;
+    std::optional<ControlMesh> control;  // empty: builtin:<name>
 };
+
+std::shared_ptr<const TranslucentAsset> bake(const Shape& shape, std::uint64_t samples,
+                                             const TransferSettings& transfer = TransferSettings{}) {
+    if (!shape.control) return bake(std::string("builtin:") + shape.name, samples, transfer);
+    const test::ScratchDir dir;
+    test::writeText(dir / (std::string(shape.name) + ".obj"), test::objText(*shape.control));
+    return bake((dir / (std::string(shape.name) + ".obj")).string(), samples, transfer);
+}
 
 Shape sphere() { return {"sphere", test::icosphere(2, 10.0f)}; }          // radius 10 mm
 Shape torus() { return {"torus", test::torus(12.0f, 5.0f, 16, 8)}; }      // 34 mm across, 10 mm thick
+// Concave: the built-in candle's melted top is a bowl inside a raised rim (40 mm across).
+Shape candle() { return {"candle", std::nullopt}; }
 
 // ---- lights -------------------------------------------------------------------------
 
@@ -190,44 +186,54 @@ double relativeRmse(std::span<const float> a, std::span<const float> b) {
 
 // ---- the measurement ----------------------------------------------------------------
 
-struct Errors {
-    double compressed = 0.0;   // the engine vs the reference: the issue's criterion
-    double basis = 0.0;        // the lossless transfer vs the reference: the PCA basis alone
-    double compression = 0.0;  // the engine vs the lossless transfer: the compression alone
-    double exactFresnel = 0.0; // the engine vs a reference fed the exact F_t irradiance
+// The engine against the exact dipole gather over the asset's samples, with the figures of
+// `opal-bench accuracy` (bench/image_accuracy.h) taken per sample instead of per pixel.
+// Analytic lights: both sides get the engine's E (the moments combined at the material's
+// eta), so what is measured is the engine's own approximation. The dome: the reference
+// gets the brute-force hemisphere integral of the map (MeshIrradiance::referenceIrradiance:
+// Embree visibility, exact F_t), so the baked, truncated visibility vectors and the
+// Fresnel-moment fit are measured too.
+struct Measured {
+    bench::ImageAccuracy figures;
+    double basis = 0.0;  // the lossless transfer vs the same reference: the PCA basis alone
 };
 
-Errors measure(const std::shared_ptr<const TranslucentAsset>& asset, LightCase light) {
-    const MeshIrradiance irradiance = irradianceOf(asset, light);
+Measured measure(const std::shared_ptr<const TranslucentAsset>& asset, LightCase light) {
+    MeshIrradiance irradiance = irradianceOf(asset, light);
     RelightEngine engine(asset);
     engine.setIrradiance(irradiance.moments());
     const Material& m = engine.material();
-    const std::span<const float> e = engine.sampleIrradiance();
-    const std::vector<float> reference = referenceGather(*asset, m, e);
-    const std::vector<float> lossless = basisGather(*asset, m, e);
-    const std::vector<float> exactFresnel = referenceGather(*asset, m, irradiance.exactIrradiance(m.eta));
-    return {relativeRmse(engine.sampleRadiance(), reference), relativeRmse(lossless, reference),
-            relativeRmse(engine.sampleRadiance(), lossless), relativeRmse(engine.sampleRadiance(), exactFresnel)};
+    const std::span<const float> engineE = engine.sampleIrradiance();
+    const std::vector<float> referenceE = light == LightCase::Dome
+                                              ? irradiance.referenceIrradiance(m.eta)
+                                              : std::vector<float>(engineE.begin(), engineE.end());
+    const std::vector<float> reference = referenceGather(*asset, m, referenceE);
+    const std::vector<std::uint8_t> all(asset->samples.size(), 1);
+    return {bench::measureAccuracy(engine.sampleRadiance(), reference, all),
+            relativeRmse(basisGather(*asset, m, engineE), referenceGather(*asset, m, engineE))};
 }
 
-void expectWithinOnePercent(const Shape& shape) {
-    const auto asset = bake(shape.control, shape.name, testedSettings(), kSamples);
+void expectAccuracyAtTheDefaults(const Shape& shape) {
+    const auto asset = bake(shape, kSamples);
     for (LightCase light : kLights) {
-        const Errors e = measure(asset, light);
-        std::printf("[ accuracy ] %s %s %.2f%% (basis alone %.3f%%, compression alone %.2f%%; "
-                    "vs a reference with exact F_t irradiance %.2f%%)\n",
-                    shape.name, name(light), 100.0 * e.compressed, 100.0 * e.basis, 100.0 * e.compression,
-                    100.0 * e.exactFresnel);
-        EXPECT_LE(e.compressed, 0.01) << shape.name << ' ' << name(light);
+        const Measured r = measure(asset, light);
+        const bench::ImageAccuracy& a = r.figures;
+        std::printf("[ accuracy ] %-6s %-7s rel. RMSE %.2f%%, luminance median %.2f%% p95 %.2f%%, darker half p95 "
+                    "%.2f%%, chromaticity p95 %.4f, negative %.4f (basis alone %.3f%%)\n",
+                    shape.name, name(light), 100.0 * a.relativeRmse, 100.0 * a.luminance.median,
+                    100.0 * a.luminance.p95, 100.0 * a.darkerHalf.p95, a.chromaticity.p95, a.negativeFraction,
+                    100.0 * r.basis);
+        EXPECT_LE(a.relativeRmse, light == LightCase::Dome ? 0.03 : 0.01) << shape.name << ' ' << name(light);
         // The basis must leave most of the budget to the compression.
-        EXPECT_LE(e.basis, 0.005) << shape.name << ' ' << name(light);
+        EXPECT_LE(r.basis, 0.005) << shape.name << ' ' << name(light);
     }
 }
 
 // ---- the tests ----------------------------------------------------------------------
 
-TEST(BakedRelighting, SphereMatchesTheExactGatherWithinOnePercent) { expectWithinOnePercent(sphere()); }
-TEST(BakedRelighting, TorusMatchesTheExactGatherWithinOnePercent) { expectWithinOnePercent(torus()); }
+TEST(BakedRelighting, SphereAtTheDefaults) { expectAccuracyAtTheDefaults(sphere()); }
+TEST(BakedRelighting, TorusAtTheDefaults) { expectAccuracyAtTheDefaults(torus()); }
+TEST(BakedRelighting, ConcaveCandleAtTheDefaults) { expectAccuracyAtTheDefaults(candle()); }
 
 // The engine on a lossless bake (keep 1, energy 1) is the direct sum above up to the
 // binary16 rounding of its working transfer (delegate/relight/transfer_product.h: 2^-11 per entry,
@@ -236,7 +242,7 @@ TEST(BakedRelighting, TorusMatchesTheExactGatherWithinOnePercent) { expectWithin
 // of 16 x 16) keep the dense bake cheap.
 TEST(BakedRelighting, LosslessBakeLeavesOnlyTheBasisError) {
     for (const Shape& shape : {sphere(), torus()}) {
-        const auto asset = bake(shape.control, shape.name, TransferSettings{1.0, 1.0}, 512);
+        const auto asset = bake(shape, 512, TransferSettings{1.0, 1.0});
         for (LightCase light : kLights) {
             RelightEngine engine(asset);
             engine.setIrradiance(irradianceOf(asset, light).moments());
@@ -250,23 +256,6 @@ TEST(BakedRelighting, LosslessBakeLeavesOnlyTheBasisError) {
             EXPECT_LE(vsReference, 0.005) << shape.name << ' ' << name(light);
         }
     }
-}
-
-// The table in the comment on testedSettings(), re-measured (run on demand with
-// --gtest_also_run_disabled_tests; 2.5 minutes on this machine).
-TEST(BakedRelighting, DISABLED_CompressionSweep) {
-    for (const Shape& shape : {sphere(), torus()})
-        for (double keep : {0.01, 0.03, 0.1})
-            for (double energy : {0.9999, TransferSettings{}.energyFraction, 1.0}) {
-                const auto asset = bake(shape.control, shape.name, TransferSettings{keep, energy}, kSamples);
-                for (LightCase light : kLights) {
-                    const Errors e = measure(asset, light);
-                    std::printf("[ sweep    ] %s keep %.2f energy %.5f %s: %.2f%% (basis alone %.3f%%, "
-                                "compression alone %.2f%%)\n",
-                                shape.name, keep, energy, name(light), 100.0 * e.compressed, 100.0 * e.basis,
-                                100.0 * e.compression);
-                }
-            }
 }
 
 }  // namespace
