@@ -56,12 +56,20 @@ NnlsResult nonnegativeLeastSquares(const Eigen::MatrixXd& A, const Eigen::Vector
         for (Eigen::Index inner = 0;; ++inner) {
             if (inner > n) return result;  // cycling in floating point: not converged
             const Eigen::VectorXd z = passiveSolution(A, b, passive);
-            // Step from x toward z as far as feasibility allows; variables that reach 0 leave.
+            // Step from x toward z as far as feasibility allows; the variable that stops the
+            // step leaves (set to 0 exactly: rounding could leave it a hair above, and the
+            // loop would cycle), with any other that reached 0.
             double alpha = 1.0;
+            Eigen::Index blocking = -1;
             for (Eigen::Index j = 0; j < n; ++j)
-                if (passive[std::size_t(j)] && z[j] <= 0.0) alpha = std::min(alpha, x[j] / (x[j] - z[j]));
+                if (passive[std::size_t(j)] && z[j] <= 0.0)
+                    if (const double a = x[j] / (x[j] - z[j]); a < alpha) alpha = a, blocking = j;
+            if (blocking < 0) {
+                x = z;
+                break;
+            }
             x += alpha * (z - x);
-            if (alpha >= 1.0) break;
+            x[blocking] = 0.0;
             for (Eigen::Index j = 0; j < n; ++j)
                 if (passive[std::size_t(j)] && x[j] <= 0.0) {
                     passive[std::size_t(j)] = false;

@@ -140,6 +140,38 @@ TEST_F(DefaultBasis, ProfilesAreNonnegativeAndNoLessAccurate) {
     EXPECT_LT(worstGain, 1e-2);
 }
 
+// A bake's basis (K = 16, rMax the asset's diagonal, here 100 mm) over a grid of the whole
+// editable range, its corners included: every profile comes out nonnegative (a solve
+// that failed would fall back to the dipping projection). The dense, absorbing corner once
+// made the solver cycle.
+TEST(ProfileBasis, EveryMaterialOfTheRangeGetsANonnegativeProfile) {
+    ProfileBasisSettings settings;
+    settings.K = 16;
+    settings.rMax = 100.0;
+    const ProfileBasis basis = ProfileBasis::fit(settings);
+    const EditableRange& range = basis.range();
+    const auto logStep = [](double lo, double hi, int i, int n) { return lo * std::pow(hi / lo, double(i) / (n - 1)); };
+    int dipped = 0;
+    for (int i = 0; i < 24; ++i)
+        for (int j = 0; j < 24; ++j)
+            for (double eta : {range.etaMin, 0.5 * (range.etaMin + range.etaMax), range.etaMax}) {
+                DipoleCoefficients c{};
+                c.sigmaSPrime = logStep(range.sigmaSPrimeMin, range.sigmaSPrimeMax, i, 24);
+                c.sigmaA = logStep(range.sigmaAMin, range.sigmaAMax, j, 24);
+                c.eta = eta;
+                const std::vector<double> s0 = basis.unconstrainedCoefficients(c), s = basis.coefficients(c);
+                double peak = 0.0, dip0 = 0.0, dip = 0.0;
+                for (double r : basis.radii()) {
+                    peak = std::max(peak, basis.reconstruct(s0, r));
+                    dip0 = std::min(dip0, basis.reconstruct(s0, r));
+                    dip = std::min(dip, basis.reconstruct(s, r));
+                }
+                dipped += dip0 < 0.0;
+                ASSERT_GE(dip, -1e-13 * peak) << "sigmaS' " << c.sigmaSPrime << " sigmaA " << c.sigmaA << " eta " << eta;
+            }
+    EXPECT_GT(dipped, 100);
+}
+
 TEST_F(DefaultBasis, DiskIntegralsIntegrateTheBasisAndReproduceTheDipole) {
     const ProfileBasis& basis = defaultBasis();
     const int K = basis.K();
