@@ -29,6 +29,7 @@
 #include "bench/cpu_time.h"
 #include "bench/error_time_plot.h"
 #include "bench/relight_reference.h"
+#include "bench/memory_bandwidth.h"
 #include "bench/relight_scene.h"
 #include "bench/shared_assets.h"
 #include "bench/subcommand.h"
@@ -133,6 +134,7 @@ struct CaseResult {
     std::optional<double> speedupTarget;
     std::optional<ReferenceTiming> reference;
     std::string referenceNote;
+    std::optional<double> streamedBytes;  // the least the case must read and write (memory_bandwidth.h)
 
     std::optional<double> speedup() const {
         if (!reference) return std::nullopt;
@@ -392,17 +394,29 @@ std::string speedupText(std::optional<double> s) {
 
 const char* verdict(std::optional<bool> met) { return !met ? "-" : *met ? "ok" : "MISSED"; }
 
-void printTable(const std::vector<CaseResult>& cases) {
-    std::printf("\n%-12s %10s %9s %9s %8s %6s %14s %10s %9s %6s\n", "case", "median ms", "min", "max", "target",
-                "met", "reference ms", "speed-up", "target", "met");
+// The bandwidth floor: the case's streamed bytes at the measured triad bandwidth.
+std::optional<double> floorMs(const CaseResult& c, double bandwidth) {
+    if (!c.streamedBytes || bandwidth <= 0.0) return std::nullopt;
+    return 1e3 * *c.streamedBytes / bandwidth;
+}
+
+void printTable(const std::vector<CaseResult>& cases, double bandwidth) {
+    std::printf("\n%-12s %10s %9s %9s %8s %6s %9s %9s %14s %10s %9s %6s\n", "case", "median ms", "min", "max", "target",
+                "met", "MB moved", "floor ms", "reference ms", "speed-up", "target", "met");
     for (const CaseResult& c : cases) {
         const std::string target = "<= " + msText(c.targetMs);
         const std::string speedupTarget = c.speedupTarget ? ">= " + speedupText(c.speedupTarget) : "-";
-        std::printf("%-12s %10s %9s %9s %8s %6s %14s %10s %9s %6s\n", c.name.c_str(), msText(c.times.median()).c_str(),
-                    msText(c.times.min()).c_str(), msText(c.times.max()).c_str(), target.c_str(),
-                    verdict(c.targetMet()), c.reference ? msText(c.reference->totalMs()).c_str() : "-",
-                    speedupText(c.speedup()).c_str(), speedupTarget.c_str(), verdict(c.speedupMet()));
+        const std::optional<double> floor = floorMs(c, bandwidth);
+        char moved[32] = "-";
+        if (c.streamedBytes) std::snprintf(moved, sizeof moved, "%.1f", *c.streamedBytes / 1e6);
+        std::printf("%-12s %10s %9s %9s %8s %6s %9s %9s %14s %10s %9s %6s\n", c.name.c_str(),
+                    msText(c.times.median()).c_str(), msText(c.times.min()).c_str(), msText(c.times.max()).c_str(),
+                    target.c_str(), verdict(c.targetMet()), moved, floor ? msText(*floor).c_str() : "-",
+                    c.reference ? msText(c.reference->totalMs()).c_str() : "-", speedupText(c.speedup()).c_str(),
+                    speedupTarget.c_str(), verdict(c.speedupMet()));
     }
+    std::printf("floor: the bytes each case must move at least (bench/memory_bandwidth.h) at the triad bandwidth "
+                "measured in this run, %.2f GB/s\n", bandwidth / 1e9);
 }
 
 void printBreakdown(const std::vector<CaseResult>& cases) {
@@ -483,7 +497,7 @@ Json peerJson(const CaseResult& c) {
 
 Json optionalJson(std::optional<double> v) { return v ? Json(*v) : Json(nullptr); }
 
-Json caseJson(const CaseResult& c) {
+Json caseJson(const CaseResult& c, double bandwidth) {
     Json breakdown = Json::object();
     for (const auto& [part, series] : c.breakdown) breakdown[part] = series.median();
     Json j = {{"work", c.work},
@@ -499,7 +513,9 @@ Json caseJson(const CaseResult& c) {
               {"speedup", optionalJson(c.speedup())},
               {"speedup_target", optionalJson(c.speedupTarget)},
               {"speedup_met", c.speedupMet() ? Json(*c.speedupMet()) : Json(nullptr)},
-              {"breakdown_ms", breakdown}};
+              {"breakdown_ms", breakdown},
+              {"streamed_bytes", optionalJson(c.streamedBytes)},
+              {"bandwidth_floor_ms", optionalJson(floorMs(c, bandwidth))}};
     if (c.reference)
         j["reference_breakdown_ms"] = {{"irradiance", c.reference->irradianceMs},
                                        {"exact_irradiance", c.reference->exactMs},
@@ -517,12 +533,34 @@ struct RunInfo {
     std::size_t samples = 0, vertices = 0, referenceOutputs = 0;
     bool extrapolated = false;
     double coverage = 0.0, firstCommitMs = 0.0, loadBefore = -1.0, loadAfter = -1.0;
+    double bandwidth = 0.0;  // bytes per second, the triad
 };
+
+// The passes of a converged frame at the delegate's default opal:samplesPerPixel: the
+// centre pass and one per sample.
+int passCountOfFrame(const Session& s) {
+    for (const hd::RenderSettingDescriptor& d : s.delegate.renderSettingDescriptors())
+        if (d.key == "opal:samplesPerPixel") return std::get<int>(d.defaultValue) + 1;
+    throw Error("the delegate describes no opal:samplesPerPixel setting");
+}
+
+// Each case's streamed bytes (memory_bandwidth.h); a converged frame is passCount passes.
+void setStreamedBytes(std::vector<CaseResult>& cases, const TranslucentAsset& asset, int passCount) {
+    const StreamedBytes bytes = streamedBytes(asset, kWidth, kHeight);
+    for (CaseResult& c : cases) {
+        if (c.name == "material") c.streamedBytes = bytes.material;
+        if (c.name == "light") c.streamedBytes = bytes.light;
+        if (c.name == "environment") c.streamedBytes = bytes.environment;
+        if (c.name == "frame") c.streamedBytes = bytes.pass;
+        if (c.name == "converge") c.streamedBytes = bytes.pass * passCount;
+        if (c.name == "light_frame") c.streamedBytes = bytes.light + bytes.pass;
+    }
+}
 
 Json resultsJson(const RunInfo& info, const std::vector<CaseResult>& cases) {
     Json byCase = Json::object(), speedups = Json::object();
     for (const CaseResult& c : cases) {
-        byCase[c.name] = caseJson(c);
+        byCase[c.name] = caseJson(c, info.bandwidth);
         if (c.reference) speedups[c.name] = *c.speedup();
     }
     return {{"asset", fs::absolute(info.asset).lexically_normal().string()},
@@ -538,6 +576,7 @@ Json resultsJson(const RunInfo& info, const std::vector<CaseResult>& cases) {
             {"speedups", speedups},
             {"machine",
              {{"hardware_concurrency", std::thread::hardware_concurrency()},
+              {"triad_bandwidth_bytes_per_second", info.bandwidth},
               {"load_average_before", info.loadBefore},
               {"load_average_after", info.loadAfter}}}};
 }
@@ -679,7 +718,9 @@ int run(const Options& options) {
     info.extrapolated = info.referenceOutputs < info.samples;
     info.loadAfter = loadAverage();
 
-    printTable(cases);
+    info.bandwidth = triadBandwidth();
+    setStreamedBytes(cases, *asset, passCountOfFrame(session));
+    printTable(cases, info.bandwidth);
     printBreakdown(cases);
     printPeer(cases);
     Json sweep;

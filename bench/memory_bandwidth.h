@@ -1,0 +1,31 @@
+// The machine's sustainable memory bandwidth, measured in the same run as the timings it is
+// compared with: STREAM's triad a[i] = b[i] + s c[i] (McCalpin), parallel with TBB over arrays
+// far larger than the caches, counting 3 x 8 bytes per element as STREAM does (no
+// write-allocate traffic). And the bytes each relighting edit must stream at least, so a
+// time can be set beside its floor: bytes / bandwidth.
+#pragma once
+
+#include "schema/asset/translucent_asset.h"
+
+#include <cstddef>
+
+namespace opal::bench {
+
+// Bytes per second: the median of `repeats` triads over three arrays of `elements` doubles.
+double triadBandwidth(std::size_t elements = std::size_t(1) << 24, int repeats = 9);
+
+// The least each case reads and writes once (bytes), from the engine's own layouts:
+//   light:       the compact transfer (TransferProduct::memoryBytes), the Haar-transformed
+//                moments read and the products y written (samples x K x 3 terms floats)
+//   environment: the compact dome vectors (EnvironmentVectors::memoryBytes), then as light
+//   material:    z_k read (samples x 3 x K floats), radiance written, the vertex weights
+//                read and the vertex radiance written
+//   pass:        every AOV channel of every pixel read and written once (the running mean),
+//                as float
+struct StreamedBytes {
+    double light = 0.0, environment = 0.0, material = 0.0, pass = 0.0;
+};
+
+StreamedBytes streamedBytes(const TranslucentAsset& asset, int width, int height);
+
+}  // namespace opal::bench
