@@ -87,7 +87,7 @@ std::string bakeIdentity(const BakeOptions& options, const TranslucentAsset& ass
       << "keep " << exact(options.transfer.keepFraction) << ' ' << options.transfer.minPerRow << '\n'
       << "energy " << exact(options.transfer.energyFraction) << '\n'
       << "environment " << options.visibility.cubeFaceSize << ' ' << options.visibility.terms << ' '
-      << options.visibility.fresnelTerms << '\n'
+      << options.visibility.fresnelTerms << ' ' << std::uint32_t(options.visibility.fresnelBasis) << '\n'
       << "seed " << options.seed << '\n';
     return s.str();
 }

@@ -35,7 +35,7 @@ CubeDirections cubeDirections(const CubeMapLayout& cube) {
 
 // The transport vectors of one sample, m after m: vectors[m * texels + t].
 void transportVectors(const SurfaceSample& s, const RayScene& scene, const CubeDirections& cube,
-                      std::uint32_t terms, float offset, std::vector<float>& vectors) {
+                      std::uint32_t terms, FresnelBasis basis, float offset, std::vector<float>& vectors) {
     const std::size_t texels = cube.direction.size();
     std::fill(vectors.begin(), vectors.end(), 0.0f);
     const Imath::V3f origin = s.position + s.normal * offset;
@@ -44,7 +44,7 @@ void transportVectors(const SurfaceSample& s, const RayScene& scene, const CubeD
         if (mu <= 0.0f) continue;
         if (scene.occluded(Ray(origin, cube.direction[t], 0.0f, std::numeric_limits<float>::infinity()))) continue;
         for (std::uint32_t m = 0; m < terms; ++m)
-            vectors[m * texels + t] = mu * float(shiftedLegendre(int(m), mu)) * cube.solidAngle[t];
+            vectors[m * texels + t] = mu * float(fresnelBasisFunction(basis, int(m), mu)) * cube.solidAngle[t];
     }
 }
 
@@ -71,6 +71,7 @@ EnvironmentTransfer buildEnvironmentTransfer(const RenderMesh& mesh, std::span<c
     EnvironmentTransfer out;
     out.cubeFaceSize = settings.cubeFaceSize;
     out.fresnelTerms = M;
+    out.fresnelBasis = settings.fresnelBasis;
     // Per sample, the kept positions (fewer than `kept` when the vector has fewer nonzero
     // coefficients: a sample facing a wall) and their values for every m.
     std::vector<SparseVector> top(samples.size());
@@ -81,7 +82,7 @@ EnvironmentTransfer buildEnvironmentTransfer(const RenderMesh& mesh, std::span<c
         cancel.throwIfRequested();
         std::vector<float>& vectors = scratch.local();
         for (std::size_t i = range.begin(); i != range.end(); ++i) {
-            transportVectors(samples[i], scene, directions, M, offset, vectors);
+            transportVectors(samples[i], scene, directions, M, settings.fresnelBasis, offset, vectors);
             for (std::uint32_t m = 0; m < M; ++m)
                 haarForwardCharts(std::span<float>(vectors.data() + m * texels, texels), faces);
             top[i] = keepLargest(std::span<const float>(vectors.data(), texels), kept);

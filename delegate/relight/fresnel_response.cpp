@@ -47,7 +47,7 @@ Vector solveRidge(Matrix a, Vector b, int n) {
 
 }  // namespace
 
-FresnelResponse::FresnelResponse(double etaMin, double etaMax, int terms) : terms_(terms) {
+FresnelResponse::FresnelResponse(double etaMin, double etaMax, int terms, FresnelBasis basis) : terms_(terms) {
     if (!(etaMin >= 1.0) || !(etaMax >= etaMin) || !std::isfinite(etaMax))
         throw Error("Fresnel response: eta range [" + std::to_string(etaMin) + ", " + std::to_string(etaMax) +
                     "] must be finite, ordered and at least 1");
@@ -58,7 +58,7 @@ FresnelResponse::FresnelResponse(double etaMin, double etaMax, int terms) : term
     std::vector<std::vector<double>> c(kEtaSamples);
     for (int j = 0; j < kEtaSamples; ++j) {
         etas[j] = etaMin + (etaMax - etaMin) * j / (kEtaSamples - 1);
-        c[j] = fresnelMoments(etas[j], terms);
+        c[j] = fresnelMoments(etas[j], terms, basis);
     }
     Matrix normal{};  // sum_j c(eta_j) c(eta_j)^T: the same for every mu
     for (int j = 0; j < kEtaSamples; ++j)

@@ -1,8 +1,8 @@
 // How an analytic light enters the Fresnel-moment irradiance (irradiance.h,
 // docs/ARCHITECTURE.md#fresnel-moments).
 //
-// The engine weights the moments with c_m(eta) = fresnelMoments(eta, terms), the
-// cosine-weighted shifted-Legendre fit of F_t(eta, .), so that baked environment vectors
+// The engine weights the moments with c_m(eta) = fresnelMoments(eta, terms, basis), the
+// cosine-weighted fit of F_t(eta, .) in the asset's basis P_m, so that baked environment vectors
 // (V mu P_m(mu) dw) give E = sum_m c_m <T_m, L>. That fit is good on average over the
 // hemisphere but not per direction: a light from one direction mu with E_m = E_perp mu
 // P_m(mu) would be off by up to 5-6% (2 or 3 terms, eta = 1.3).
@@ -15,6 +15,8 @@
 // and < 1% for mu >= 0.1; 3 terms 1e-5 RMS; 1 term 0.8% RMS, 9% at mu = 0.1.
 #pragma once
 
+#include "schema/scatter/fresnel_moments.h"
+
 #include <vector>
 
 namespace opal {
@@ -22,7 +24,7 @@ namespace opal {
 class FresnelResponse {
 public:
     // Throws opal::Error unless 1 <= etaMin <= etaMax (finite) and terms is in [1, 3].
-    FresnelResponse(double etaMin, double etaMax, int terms);
+    FresnelResponse(double etaMin, double etaMax, int terms, FresnelBasis basis = FresnelBasis::Legendre);
 
     int terms() const { return terms_; }
     // h[m] = h_m(mu) for m < terms, mu clamped to [0, 1] (linear between table nodes).

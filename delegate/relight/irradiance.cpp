@@ -7,8 +7,8 @@
 
 namespace opal {
 
-IrradianceMoments::IrradianceMoments(std::uint32_t samples, std::uint32_t terms)
-    : samples(samples), terms(terms), values(std::size_t(samples) * terms * 3, 0.0f) {}
+IrradianceMoments::IrradianceMoments(std::uint32_t samples, std::uint32_t terms, FresnelBasis basis)
+    : samples(samples), terms(terms), basis(basis), values(std::size_t(samples) * terms * 3, 0.0f) {}
 
 std::vector<float> IrradianceMoments::combine(std::span<const double> c) const {
     if (c.size() != terms)
@@ -22,6 +22,7 @@ std::vector<float> IrradianceMoments::combine(std::span<const double> c) const {
 }
 
 IrradianceMoments& IrradianceMoments::operator+=(const IrradianceMoments& other) {
+    if (other.basis != basis) throw Error("irradiance: cannot add moments taken against another Fresnel basis");
     if (other.samples != samples || other.terms != terms)
         throw Error("irradiance: cannot add " + std::to_string(other.samples) + " x " + std::to_string(other.terms) +
                     " moments to " + std::to_string(samples) + " x " + std::to_string(terms));

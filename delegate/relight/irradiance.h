@@ -26,10 +26,11 @@ namespace opal {
 struct IrradianceMoments {
     std::uint32_t samples = 0;
     std::uint32_t terms = 0;
+    FresnelBasis basis = FresnelBasis::Legendre;  // the P_m the moments are taken against
     std::vector<float> values;  // samples x terms x 3 (RGB): values[(i * terms + m) * 3 + c]
 
     IrradianceMoments() = default;
-    IrradianceMoments(std::uint32_t samples, std::uint32_t terms);  // zero
+    IrradianceMoments(std::uint32_t samples, std::uint32_t terms, FresnelBasis basis = FresnelBasis::Legendre);  // zero
 
     std::uint32_t channels() const { return 3 * terms; }
     float* sample(std::size_t i) { return values.data() + i * channels(); }
@@ -37,7 +38,7 @@ struct IrradianceMoments {
 
     // E(x_i; eta) = sum_m c[m] E_m(x_i), RGB: samples x 3. c.size() must equal terms.
     std::vector<float> combine(std::span<const double> c) const;
-    // Adds another set of the same shape (throws opal::Error otherwise).
+    // Adds another set of the same shape and basis (throws opal::Error otherwise).
     IrradianceMoments& operator+=(const IrradianceMoments& other);
 };
 

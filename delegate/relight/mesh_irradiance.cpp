@@ -35,12 +35,13 @@ MeshIrradiance::MeshIrradiance(std::shared_ptr<const TranslucentAsset> asset, co
     : asset_(std::move(asset)),
       objectToWorld_(objectToWorld),
       terms_(momentTerms(require(asset_))),
-      response_(asset_->range.etaMin, asset_->range.etaMax, int(terms_)),
+      basis_(asset_->environment.offsets.empty() ? FresnelBasis::Legendre : asset_->environment.fresnelBasis),
+      response_(asset_->range.etaMin, asset_->range.etaMax, int(terms_), basis_),
       placed_(placeSamples(asset_->samples, objectToWorld)),
       total_(std::uint32_t(asset_->samples.size()), terms_) {}
 
 void MeshIrradiance::compute(Contribution& c, const RayScene* scene) {
-    c.moments = IrradianceMoments(std::uint32_t(placed_.positions.size()), terms_);
+    c.moments = IrradianceMoments(std::uint32_t(placed_.positions.size()), terms_, basis_);
     c.referenceE.clear();
     if (const auto* light = std::get_if<AnalyticLight>(&c.source)) {
         const float offset = scene ? kShadowOffset * scene->extent() : 0.0f;
@@ -57,7 +58,7 @@ void MeshIrradiance::compute(Contribution& c, const RayScene* scene) {
 }
 
 void MeshIrradiance::resum() {
-    total_ = IrradianceMoments(std::uint32_t(placed_.positions.size()), terms_);
+    total_ = IrradianceMoments(std::uint32_t(placed_.positions.size()), terms_, basis_);
     for (const auto& [id, c] : lights_) total_ += c.moments;
 }
 
@@ -102,7 +103,7 @@ std::vector<float> MeshIrradiance::analyticIrradiance(double eta) const {
 
 std::vector<float> MeshIrradiance::exactIrradiance(double eta) const {
     std::vector<float> rgb = analyticIrradiance(eta);
-    const std::vector<double> c = fresnelMoments(eta, int(terms_));
+    const std::vector<double> c = fresnelMoments(eta, int(terms_), basis_);
     for (const auto& [id, contribution] : lights_) {
         if (std::holds_alternative<AnalyticLight>(contribution.source)) continue;
         const std::vector<float> dome = contribution.moments.combine(c);

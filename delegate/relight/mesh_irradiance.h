@@ -70,6 +70,9 @@ private:
     std::shared_ptr<const TranslucentAsset> asset_;
     Imath::M44d objectToWorld_;
     std::uint32_t terms_ = 0;
+    // The asset's dome vectors' basis; analytic lights use it too so that every light sums
+    // into the same moments (Legendre without a dome transfer).
+    FresnelBasis basis_ = FresnelBasis::Legendre;
     FresnelResponse response_;
     PlacedSamples placed_;
     std::unique_ptr<const EnvironmentVectors> environment_;  // built with the first dome

@@ -79,7 +79,7 @@ void RelightEngine::setIrradiance(const IrradianceMoments& irradiance) {
                           product_.multiplyRows(haar_.data(), W, products_.data(), C, rows.begin(), rows.end());
                       });
     moments_ = irradiance;
-    fresnel_ = fresnelMoments(material_.eta, int(moments_.terms));
+    fresnel_ = fresnelMoments(material_.eta, int(moments_.terms), moments_.basis);
     formRadiance(true);
 }
 
@@ -92,7 +92,7 @@ std::vector<std::string> RelightEngine::setMaterial(const Material& material) {
         for (std::size_t k = 0; k < K_; ++k) profile_[c * paddedK_ + k] = float(s[c][k] / std::numbers::pi);
     const bool etaChanged = clamped.eta != material_.eta;
     material_ = clamped;
-    if (etaChanged) fresnel_ = fresnelMoments(material_.eta, int(moments_.terms));
+    if (etaChanged) fresnel_ = fresnelMoments(material_.eta, int(moments_.terms), moments_.basis);
     formRadiance(etaChanged);
     return warnings;
 }

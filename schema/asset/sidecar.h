@@ -18,7 +18,7 @@ namespace opal {
 
 // 2.0: transfer values on a quantization grid, environment values as half planes (1.0
 // stored both as float planes). 2.1 adds the optional BKID chunk (the bake identifier).
-inline constexpr FileKind kSidecarKind{"SCAT", {2, 1}};
+inline constexpr FileKind kSidecarKind{"SCAT", {2, 2}};
 
 // The chunk tags (all required in version 2.0, except BKID: optional, from 2.1).
 namespace sidecar_chunk {
@@ -29,6 +29,8 @@ inline constexpr ChunkTag kVertexWeights{"VWGT"};
 inline constexpr ChunkTag kTransfer{"TRNS"};
 inline constexpr ChunkTag kEnvironment{"ENVT"};
 inline constexpr ChunkTag kBakeId{"BKID"};
+// Optional (2.2): the environment vectors' Fresnel basis, u32 (FresnelBasis); absent: Legendre.
+inline constexpr ChunkTag kFresnelBasis{"FBAS"};
 }  // namespace sidecar_chunk
 
 struct SidecarWriteOptions {

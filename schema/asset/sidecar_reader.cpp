@@ -12,7 +12,8 @@ namespace {
 
 using namespace sidecar_chunk;
 
-constexpr ChunkTag kKnownChunks[] = {kHeader, kLayout, kSamples, kVertexWeights, kTransfer, kEnvironment, kBakeId};
+constexpr ChunkTag kKnownChunks[] = {kHeader, kLayout, kSamples, kVertexWeights, kTransfer, kEnvironment, kBakeId,
+                                     kFresnelBasis};
 
 struct Payload {
     ChartLayout layout;
@@ -149,6 +150,14 @@ EnvironmentTransfer readEnvironment(ChunkSource src, std::uint64_t samples) {
     return env;
 }
 
+FresnelBasis readFresnelBasis(ChunkSource src) {
+    const std::uint32_t basis = src.readU32();
+    if (basis != std::uint32_t(FresnelBasis::Legendre) && basis != std::uint32_t(FresnelBasis::Schlick))
+        src.fail("unknown Fresnel basis " + str(basis) + " (0 Legendre, 1 Schlick)");
+    src.finish();
+    return FresnelBasis(basis);
+}
+
 }  // namespace
 
 SidecarHeader readSidecar(const std::filesystem::path& path, TranslucentAsset& asset) {
@@ -163,6 +172,7 @@ SidecarHeader readSidecar(const std::filesystem::path& path, TranslucentAsset& a
     p.vertexWeights = readVertexWeights(file.open(kVertexWeights), samples, header.vertexCount);
     p.transfer = readTransfer(file.open(kTransfer), p.layout, header.basisCount);
     p.environment = readEnvironment(file.open(kEnvironment), samples);
+    if (file.find(kFresnelBasis)) p.environment.fresnelBasis = readFresnelBasis(file.open(kFresnelBasis));
     asset.layout = p.layout;
     asset.samples = std::move(p.samples);
     asset.vertexWeights = std::move(p.vertexWeights);

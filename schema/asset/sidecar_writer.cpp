@@ -112,6 +112,9 @@ void writeSidecar(const std::filesystem::path& path, const TranslucentAsset& a,
     std::vector<ChunkProducer> all(std::begin(chunks), std::end(chunks));
     if (a.bake.identifier)  // optional: readers older than 2.1 skip it
         all.push_back({kBakeId, ChunkCodec::Raw, false, [&](ChunkSink& s) { s.writeU64(*a.bake.identifier); }});
+    if (a.environment.fresnelBasis != FresnelBasis::Legendre)  // optional: readers older than 2.2 skip it
+        all.push_back({kFresnelBasis, ChunkCodec::Raw, false,
+                       [&](ChunkSink& s) { s.writeU32(std::uint32_t(a.environment.fresnelBasis)); }});
     writeChunkedFile(path, kSidecarKind, all, {options.zstdLevel});
 }
 

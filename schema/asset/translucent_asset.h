@@ -3,6 +3,7 @@
 // millimetres that material coefficients (mm^-1) and the profile basis (mm) use.
 #pragma once
 
+#include "schema/scatter/fresnel_moments.h"
 #include "schema/scatter/material.h"
 #include "schema/scatter/profile_basis.h"
 #include "schema/wavelet/chart_layout.h"
@@ -63,6 +64,9 @@ struct CompressedTransfer {
 struct EnvironmentTransfer {
     std::uint32_t cubeFaceSize = 32;
     std::uint32_t fresnelTerms = 1;
+    // The P_m of the vectors (schema/scatter/fresnel_moments.h); Legendre for sidecars
+    // without chunk FBAS (written before 2.2).
+    FresnelBasis fresnelBasis = FresnelBasis::Legendre;
     // CSR over (sample * fresnelTerms + m); empty offsets mean "not baked".
     std::vector<std::uint32_t> offsets;
     std::vector<std::uint32_t> indices;  // cube-map Haar coefficient index, ascending per row

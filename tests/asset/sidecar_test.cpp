@@ -170,6 +170,33 @@ TEST(Sidecar, EnvironmentMayBeAbsent) {
     expectSameSidecarParts(original, loaded);
 }
 
+// The environment vectors' Fresnel basis (schema/scatter/fresnel_moments.h) travels in the
+// optional chunk FBAS; a sidecar without it (every one written before 2.2) is Legendre.
+TEST(Sidecar, FresnelBasisRoundTripsAndDefaultsToLegendre) {
+    TempDir dir;
+    TranslucentAsset original = test::syntheticAsset();
+    roundToStoredPrecision(original);
+    original.environment.fresnelBasis = FresnelBasis::Schlick;
+    writeSidecar(dir / "schlick.opal", original);
+    TranslucentAsset loaded;
+    readSidecar(dir / "schlick.opal", loaded);
+    EXPECT_EQ(loaded.environment.fresnelBasis, FresnelBasis::Schlick);
+    EXPECT_TRUE(ChunkedFileReader(dir / "schlick.opal", kSidecarKind).find(sidecar_chunk::kFresnelBasis));
+
+    original.environment.fresnelBasis = FresnelBasis::Legendre;
+    writeSidecar(dir / "legendre.opal", original);
+    TranslucentAsset legendre;
+    legendre.environment.fresnelBasis = FresnelBasis::Schlick;  // overwritten by the read
+    readSidecar(dir / "legendre.opal", legendre);
+    EXPECT_EQ(legendre.environment.fresnelBasis, FresnelBasis::Legendre);
+    EXPECT_FALSE(ChunkedFileReader(dir / "legendre.opal", kSidecarKind).find(sidecar_chunk::kFresnelBasis));
+
+    original.environment.fresnelBasis = FresnelBasis(7);
+    writeSidecar(dir / "unknown.opal", original);
+    expectContains(errorOf([&] { readSidecar(dir / "unknown.opal", loaded); }),
+                   {"unknown.opal", "FBAS", "unknown Fresnel basis 7"});
+}
+
 TEST(Sidecar, TwoWritesAreByteIdentical) {
     TempDir dir;
     TranslucentAsset a = test::syntheticAsset();

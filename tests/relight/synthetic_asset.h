@@ -157,7 +157,8 @@ inline void buildTransfer(TranslucentAsset& asset, double keepFraction, double e
 inline EnvironmentTransfer environmentTransfer(const TranslucentAsset& asset, std::uint32_t faceSize,
                                                std::uint32_t terms,
                                                const std::function<bool(std::size_t, const Imath::V3f&)>& visible,
-                                               std::size_t keep = 0) {
+                                               std::size_t keep = 0,
+                                               FresnelBasis basis = FresnelBasis::Legendre) {
     const CubeMapLayout cube(faceSize);
     std::vector<Imath::V3f> directions(cube.texels());
     std::vector<float> solidAngles(cube.texels());
@@ -168,6 +169,7 @@ inline EnvironmentTransfer environmentTransfer(const TranslucentAsset& asset, st
     EnvironmentTransfer env;
     env.cubeFaceSize = faceSize;
     env.fresnelTerms = terms;
+    env.fresnelBasis = basis;
     env.offsets.push_back(0);
     std::vector<float> vectors(std::size_t(terms) * cube.texels());
     for (std::size_t i = 0; i < asset.samples.size(); ++i) {
@@ -176,7 +178,7 @@ inline EnvironmentTransfer environmentTransfer(const TranslucentAsset& asset, st
             for (std::uint32_t t = 0; t < cube.texels(); ++t) {
                 const float mu = asset.samples[i].normal.dot(directions[t]);
                 vector[t] = mu > 0.0f && visible(i, directions[t])
-                                ? float(mu * shiftedLegendre(int(m), mu)) * solidAngles[t]
+                                ? float(mu * fresnelBasisFunction(basis, int(m), mu)) * solidAngles[t]
                                 : 0.0f;
             }
             haarForwardCharts(vector, cube.charts());
