@@ -69,7 +69,6 @@ std::string bakeIdentity(const BakeOptions& options, const TranslucentAsset& ass
     const Material& m = asset.defaultMaterial;
     std::ostringstream s;
     s << "tool opal-bake " << OPAL_VERSION << '\n'
-      << "sidecar " << kSidecarKind.version.major << '.' << kSidecarKind.version.minor << '\n'
       << "input " << options.input << '\n'
       << "input bytes " << (builtin ? std::string("built in") : hex(hashFile(options.input))) << '\n'
       << "render mesh " << hex(hashRenderMesh(asset.mesh)) << '\n'
@@ -82,7 +81,13 @@ std::string bakeIdentity(const BakeOptions& options, const TranslucentAsset& ass
       << exact(r.sigmaAMax) << ' ' << exact(r.etaMin) << ' ' << exact(r.etaMax) << '\n'
       << "material " << options.material;
     for (int c = 0; c < 3; ++c) s << ' ' << exact(m.sigmaSPrime[c]) << ' ' << exact(m.sigmaA[c]);
-    s << ' ' << exact(m.eta) << '\n'
+    s << ' ' << exact(m.eta) << '\n' << compressionIdentity(options);
+    return s.str();
+}
+
+std::string compressionIdentity(const BakeOptions& options) {
+    std::ostringstream s;
+    s << "sidecar " << kSidecarKind.version.major << '.' << kSidecarKind.version.minor << '\n'
       << "basis " << options.basisCount << '\n'
       << "keep " << exact(options.transfer.keepFraction) << ' ' << options.transfer.minPerRow << '\n'
       << "energy " << exact(options.transfer.energyFraction) << '\n'

@@ -23,4 +23,9 @@ std::string bakeIdentity(const BakeOptions& options, const TranslucentAsset& ass
 
 std::uint64_t bakeIdentifier(const BakeOptions& options, const TranslucentAsset& asset);
 
+// The lines of bakeIdentity that come from the options alone (the sidecar format, K, both
+// compression steps, the environment transfer, the seed): what a cache of bakes keys on
+// besides the input and the mesh settings.
+std::string compressionIdentity(const BakeOptions& options);
+
 }  // namespace opal

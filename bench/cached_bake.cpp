@@ -1,5 +1,6 @@
 #include "bench/cached_bake.h"
 
+#include "bake/bake_identifier.h"
 #include "bake/bake_report.h"
 #include "bench/output_folder.h"
 #include "schema/asset/asset_layer.h"
@@ -27,15 +28,12 @@ std::string numberText(double v) {
 std::string bakeKey(const BakeOptions& o) {
     std::ostringstream key;
     key << "input=" << o.input << " scheme=" << o.scheme << " level=" << (o.level ? std::to_string(*o.level) : "auto")
-        << " samples=" << o.samples << " units_per_mm=" << numberText(o.unitsPerMm) << " material=" << o.material
-        << " basis=" << o.basisCount << " keep=" << numberText(o.transfer.keepFraction)
-        << " energy=" << numberText(o.transfer.energyFraction) << " env_res=" << o.visibility.cubeFaceSize
-        << " env_terms=" << o.visibility.terms << " seed=" << o.seed;
+        << " samples=" << o.samples << " units_per_mm=" << numberText(o.unitsPerMm) << " material=" << o.material;
     if (o.range)
         key << " range=" << numberText(o.range->sigmaSPrimeMin) << ":" << numberText(o.range->sigmaSPrimeMax) << ","
             << numberText(o.range->sigmaAMin) << ":" << numberText(o.range->sigmaAMax) << ","
             << numberText(o.range->etaMin) << ":" << numberText(o.range->etaMax);
-    return key.str() + "\n";
+    return key.str() + "\n" + compressionIdentity(o);
 }
 
 std::string stemName(const BakeOptions& o, const std::string& name) {
