@@ -4,17 +4,22 @@
 
 namespace opal::bench {
 
-std::vector<TransferSettings> compressionSettings(std::span<const double> keeps, std::span<const double> energies) {
+// The smallest keep fraction opal-bake accepts: below the floor at any sample count.
+constexpr double kCountOnlyKeep = 1e-6;
+
+std::vector<TransferSettings> compressionSettings(std::span<const std::uint32_t> perRows,
+                                                  std::span<const double> energies) {
     const TransferSettings defaults;
     std::vector<TransferSettings> settings;
-    const auto add = [&](double keep, double energy) {
+    const auto add = [&](const TransferSettings& t) {
         const bool seen = std::any_of(settings.begin(), settings.end(), [&](const TransferSettings& s) {
-            return s.keepFraction == keep && s.energyFraction == energy;
+            return s.keepFraction == t.keepFraction && s.energyFraction == t.energyFraction &&
+                   s.minPerRow == t.minPerRow;
         });
-        if (!seen) settings.push_back({keep, energy});
+        if (!seen) settings.push_back(t);
     };
-    for (double keep : keeps) add(keep, defaults.energyFraction);
-    for (double energy : energies) add(defaults.keepFraction, energy);
+    for (std::uint32_t perRow : perRows) add({kCountOnlyKeep, defaults.energyFraction, perRow});
+    for (double energy : energies) add({defaults.keepFraction, energy, defaults.minPerRow});
     return settings;
 }
 

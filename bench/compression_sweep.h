@@ -12,9 +12,11 @@
 
 namespace opal::bench {
 
-// keeps at the default energy, then energies at the default keep, in that order, each
-// setting once (the defaults appear once when both lists hold them).
-std::vector<TransferSettings> compressionSettings(std::span<const double> keeps, std::span<const double> energies);
+// Step-1 coefficients per row at the default energy (the count alone: the keep fraction at
+// its smallest, so at every sample count the count governs), then energies at the shipped
+// step-1 budget, in that order, each setting once.
+std::vector<TransferSettings> compressionSettings(std::span<const std::uint32_t> perRows,
+                                                  std::span<const double> energies);
 
 // The bake of `mesh` that matches `asset` (sample count, subdivision scheme and level,
 // units per mm, seed, basis count, editable range, environment settings) at `transfer`.

@@ -93,7 +93,7 @@ struct Options {
     std::string peer;  // "jensen-buhler" or empty
     // The engine's compression sweep for the error-against-time figure (bench/compression_sweep.h).
     std::string sweepMesh;
-    std::vector<double> sweepKeeps = {0.003, 0.01, 0.03, 0.1};
+    std::vector<std::uint32_t> sweepPerRow = {32, 64, 128, 256, 512};
     std::vector<double> sweepEnergies = {0.999, 0.9999, 0.99999};
     fs::path sweepDir;  // default: the temporary folder
     fs::path plot;
@@ -615,7 +615,7 @@ Json runSweep(const Options& options, const TranslucentAsset& asset, std::vector
     const TransferSettings defaults;
     Json points = Json::array(), peerPoints = Json::array();
     const std::string label = bakeLabel(options.sweepMesh);
-    for (const TransferSettings& setting : compressionSettings(options.sweepKeeps, options.sweepEnergies)) {
+    for (const TransferSettings& setting : compressionSettings(options.sweepPerRow, options.sweepEnergies)) {
         const CachedBake bake = bakeOrReuse(sweepBakeOptions(asset, options.sweepMesh, setting), label, dir);
         if (bake.asset->samples.size() != asset.samples.size())
             throw Error("--sweep-mesh " + options.sweepMesh + " baked to " + std::to_string(bake.asset->samples.size()) +
@@ -627,13 +627,16 @@ Json runSweep(const Options& options, const TranslucentAsset& asset, std::vector
         const SweepMeasurement m = measureLightMove(bake.asset, options, std::move(maxErrors));
         const double ms = m.light.times.median();
         engine.points.push_back({ms, m.engineError});
-        if (setting.keepFraction == defaults.keepFraction && setting.energyFraction == defaults.energyFraction)
+        if (setting.keepFraction == defaults.keepFraction && setting.energyFraction == defaults.energyFraction &&
+            setting.minPerRow == defaults.minPerRow)
             shipped.points.push_back({ms, m.engineError});
-        std::printf("opal-bench relight: sweep keep %g energy %g: light move %s ms, relative RMSE %.2e (%s)\n",
-                    setting.keepFraction, setting.energyFraction, msText(ms).c_str(), m.engineError,
+        std::printf("opal-bench relight: sweep keep %g (at least %u per row) energy %g: light move %s ms, relative RMSE "
+                    "%.2e (%s)\n",
+                    setting.keepFraction, setting.minPerRow, setting.energyFraction, msText(ms).c_str(), m.engineError,
                     bake.reused ? "cached bake" : "baked");
         std::fflush(stdout);
         points.push_back({{"keep", setting.keepFraction},
+                          {"keep_min", setting.minPerRow},
                           {"energy", setting.energyFraction},
                           {"light_move_median_ms", ms},
                           {"light_move_times_ms", m.light.times.ms},
@@ -772,7 +775,8 @@ int runRelightBench(int argc, char** argv) {
     app.add_option("--sweep-mesh", options.sweepMesh,
                    "with --peer: also bake this mesh (the asset's own: same samples, level, scale, seed) at each "
                    "compression setting of the sweep, and time a point-light move and measure its error on each");
-    app.add_option("--sweep-keep", options.sweepKeeps, "the sweep's step-1 keep fractions (at the default energy)")
+    app.add_option("--sweep-per-row", options.sweepPerRow,
+                   "the sweep's step-1 Haar coefficients per row (at the default energy)")
         ->check(CLI::Range(1e-6, 1.0))
         ->capture_default_str();
     app.add_option("--sweep-energy", options.sweepEnergies, "the sweep's step-2 energy fractions (at the default keep)")

@@ -9,18 +9,21 @@
 namespace opal::bench {
 namespace {
 
-TEST(CompressionSweep, KeepsAtTheDefaultEnergyThenEnergiesAtTheDefaultKeepEachOnce) {
+TEST(CompressionSweep, CountsAtTheDefaultEnergyThenEnergiesAtTheShippedBudgetEachOnce) {
     const TransferSettings d;
-    const std::vector<double> keeps = {0.003, d.keepFraction, 0.1}, energies = {0.999, d.energyFraction};
-    const std::vector<TransferSettings> s = compressionSettings(keeps, energies);
+    const std::vector<std::uint32_t> perRows = {32, 512, 32};
+    const std::vector<double> energies = {0.999, d.energyFraction, 0.999};
+    const std::vector<TransferSettings> s = compressionSettings(perRows, energies);
     ASSERT_EQ(s.size(), 4u);
-    EXPECT_EQ(s[0].keepFraction, 0.003);
+    EXPECT_EQ(s[0].minPerRow, 32u);
+    EXPECT_LT(s[0].keepFraction * 65536.0, 1.0);  // the count governs at every sample count
     EXPECT_EQ(s[0].energyFraction, d.energyFraction);
-    EXPECT_EQ(s[1].keepFraction, d.keepFraction);  // the shipped defaults, once
-    EXPECT_EQ(s[1].energyFraction, d.energyFraction);
-    EXPECT_EQ(s[2].keepFraction, 0.1);
+    EXPECT_EQ(s[1].minPerRow, 512u);
+    EXPECT_EQ(s[2].keepFraction, d.keepFraction);
+    EXPECT_EQ(s[2].minPerRow, d.minPerRow);
+    EXPECT_EQ(s[2].energyFraction, 0.999);
+    EXPECT_EQ(s[3].energyFraction, d.energyFraction);  // the shipped defaults
     EXPECT_EQ(s[3].keepFraction, d.keepFraction);
-    EXPECT_EQ(s[3].energyFraction, 0.999);
 }
 
 TEST(CompressionSweep, BakesMatchTheAssetButForCompression) {
