@@ -39,9 +39,11 @@ std::string bakeKey(const BakeOptions& o) {
 std::string stemName(const BakeOptions& o, const std::string& name) {
     std::string stem = name + "-" + std::to_string(o.samples);
     const TransferSettings defaults;
-    if (o.transfer.keepFraction != defaults.keepFraction || o.transfer.energyFraction != defaults.energyFraction) {
-        char buf[64];
-        std::snprintf(buf, sizeof buf, "-k%g-e%g", o.transfer.keepFraction, o.transfer.energyFraction);
+    if (o.transfer.keepFraction != defaults.keepFraction || o.transfer.energyFraction != defaults.energyFraction ||
+        o.transfer.minPerRow != defaults.minPerRow) {
+        char buf[80];
+        std::snprintf(buf, sizeof buf, "-k%g-m%u-e%g", o.transfer.keepFraction, o.transfer.minPerRow,
+                      o.transfer.energyFraction);
         stem += buf;
     }
     return stem;
