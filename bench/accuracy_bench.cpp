@@ -6,8 +6,9 @@
 // shortest and longest mean free path its editable range allows, bench/mean_free_path_ends.h)
 // and each case, the view of `opal-bench relight`'s scene (bench/relight_scene.h) is rendered
 // to convergence by two delegates, one with the engine and one with opal:reference (the exact
-// gather over the same samples and E), and compared on the subsurface AOV over the pixels
-// that show the asset in both. The cases:
+// gather over the same samples; the same E for the analytic lights, and for the dome the
+// brute-force hemisphere integral of the map, docs/ARCHITECTURE.md#dome-reference), and
+// compared on the subsurface AOV over the pixels that show the asset in both. The cases:
 //   point        one point light (relight's key light), no dome
 //   directional  one distant light shining from the point light's position, no dome
 //   dome         the studio HDR dome alone
