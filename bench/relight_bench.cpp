@@ -68,11 +68,13 @@ namespace {
 namespace fs = std::filesystem;
 using Json = nlohmann::ordered_json;
 
-// The issue's targets on this 2-core machine.
-constexpr double kMaterialMs = 2.0;
-constexpr double kLightMs = 50.0;
-constexpr double kEnvironmentMs = 50.0;
-constexpr double kFrameMs = 50.0;
+// Issue 13's targets on this 2-core machine (the bunny at 65,536 samples): a material
+// edit, a point-light move, a dome rotation, one 1280x720 pass at one sample per pixel;
+// the converged frame keeps issue 12's target.
+constexpr double kMaterialMs = 1.0;
+constexpr double kLightMs = 20.0;
+constexpr double kEnvironmentMs = 20.0;
+constexpr double kFrameMs = 30.0;
 constexpr double kConvergeMs = 800.0;
 constexpr double kLightSpeedup = 100.0;
 constexpr double kMaterialSpeedup = 10000.0;
