@@ -146,6 +146,27 @@ ProfileBasis::ProfileBasis(std::vector<double> radii, std::vector<double> weight
         if (!std::isfinite(values_[i]))
             throw Error("ProfileBasis: values[" + std::to_string(i) + "] is not finite");
     range_.validate("ProfileBasis range");
+    prepareNonnegativeFrame();
+}
+
+// docs/ARCHITECTURE.md#pca, nonnegative profiles: the basis-only part of coefficients().
+void ProfileBasis::prepareNonnegativeFrame() {
+    const Eigen::Index L = static_cast<Eigen::Index>(radii_.size()), K = this->K();
+    if (K < 2) return;
+    const Eigen::Map<const RowMatrix> Bt(values_.data(), K, L);  // row k: b_k(r_l)
+    Eigen::VectorXd d(K);
+    diskIntegrals(rMax(), std::span<double>(d.data(), std::size_t(K)));
+    const Eigen::MatrixXd Q = d.householderQr().householderQ();
+    const Eigen::MatrixXd N = Q.rightCols(K - 1);  // orthonormal, N^T d = 0
+    frame_.complement.assign(N.data(), N.data() + N.size());
+    for (Eigen::Index l = 0; l < L; ++l) {
+        const Eigen::VectorXd g = N.transpose() * Bt.col(l);
+        const double norm = g.norm();
+        if (norm == 0.0) continue;  // b(r_l) along d (or zero): nothing to move
+        for (Eigen::Index k = 0; k < K - 1; ++k) frame_.normals.push_back(g[k] / norm);
+        frame_.norms.push_back(norm);
+        frame_.nodes.push_back(std::size_t(l));
+    }
 }
 
 // docs/ARCHITECTURE.md#pca: M[j][l] = sqrt(w_l) R_d(r_l, sigma_j) / ||R_d(., sigma_j)||_w
@@ -249,23 +270,15 @@ std::vector<double> ProfileBasis::coefficients(const DipoleCoefficients& c) cons
     const Eigen::VectorXd profile = Bt.transpose() * s0;
     if (profile.minCoeff() >= 0.0 || K < 2) return s;
 
-    Eigen::VectorXd d(K);
-    diskIntegrals(rMax(), std::span<double>(d.data(), std::size_t(K)));
-    const Eigen::MatrixXd Q = d.householderQr().householderQ();
-    const Eigen::MatrixXd N = Q.rightCols(K - 1);  // orthonormal, N^T d = 0
-
     // Columns of [G^T; h^T], one per constraint, scaled by 1 / |g_l| (which leaves
-    // g_l.u >= h_l unchanged) so the tail's tiny b_k weigh as much as the core's.
-    Eigen::MatrixXd E(K, L);
-    Eigen::Index used = 0;
-    for (Eigen::Index l = 0; l < L; ++l) {
-        const Eigen::VectorXd g = N.transpose() * Bt.col(l);
-        const double norm = g.norm();
-        if (norm == 0.0) continue;  // b(r_l) along d (or zero): nothing to move
-        E.col(used).head(K - 1) = g / norm;
-        E(K - 1, used++) = -profile[l] / norm;
-    }
-    E.conservativeResize(Eigen::NoChange, used);
+    // g_l.u >= h_l unchanged) so the tail's tiny b_k weigh as much as the core's; G from
+    // the frame the constructor made.
+    const Eigen::Index nodes = static_cast<Eigen::Index>(frame_.nodes.size());
+    const Eigen::Map<const Eigen::MatrixXd> N(frame_.complement.data(), K, K - 1);
+    Eigen::MatrixXd E(K, nodes);
+    E.topRows(K - 1) = Eigen::Map<const Eigen::MatrixXd>(frame_.normals.data(), K - 1, nodes);
+    for (Eigen::Index j = 0; j < nodes; ++j)
+        E(K - 1, j) = -profile[static_cast<Eigen::Index>(frame_.nodes[std::size_t(j)])] / frame_.norms[std::size_t(j)];
     const NnlsResult dual = nonnegativeLeastSquares(E, Eigen::VectorXd::Unit(K, K - 1));
     const Eigen::VectorXd r = E * dual.x - Eigen::VectorXd::Unit(K, K - 1);
     // Infeasible or not converged (neither seen over the editable range, which the tests

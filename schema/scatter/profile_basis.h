@@ -70,8 +70,21 @@ public:
     double relativeError(const DipoleCoefficients& c, int K = -1) const;
 
 private:
+    // What coefficients()' nonnegative projection needs of the basis alone, made once by the
+    // constructor (it would otherwise be most of a material edit's projection time): an
+    // orthonormal basis N of the complement of d (K x (K - 1)), and for each node l that
+    // constrains anything, g_l = N^T b(r_l) scaled to unit length and |g_l|.
+    struct NonnegativeFrame {
+        std::vector<double> complement;  // N, K x (K - 1), column-major
+        std::vector<double> normals;     // g_l / |g_l|, (K - 1) x nodes, column-major
+        std::vector<double> norms;       // |g_l|
+        std::vector<std::size_t> nodes;  // l
+    };
+    void prepareNonnegativeFrame();
+
     std::vector<double> radii_, weights_, values_, eigenvalues_;
     EditableRange range_;
+    NonnegativeFrame frame_;
 };
 
 // Fast evaluation of all K basis functions at once, for the bake's N^2 inner loop:
