@@ -14,6 +14,7 @@
 #include "schema/asset/asset_layer.h"
 #include "schema/asset/cube_map.h"
 #include "schema/asset/point_range.h"
+#include "schema/asset/self_term.h"
 #include "schema/asset/sidecar.h"
 #include "schema/asset/transfer_apply.h"
 #include "schema/usd/crash_point.h"
@@ -259,6 +260,9 @@ void writeBakedAsset(const std::filesystem::path& stem, const TranslucentAsset& 
 }
 
 double measureTransferError(const TranslucentAsset& asset, std::uint64_t seed) {
+    if (asset.transfer.selfTerm != SelfTerm::AtRunTime)
+        throw Error("transfer error: asset '" + asset.name + "' holds its self term in the transfer (baked before "
+                    "sidecar 2.3): re-bake it");
     const std::size_t n = asset.samples.size();
     Imath::Box3f box;
     for (const SurfaceSample& s : asset.samples) box.extendBy(s.position);
@@ -281,31 +285,33 @@ double measureTransferError(const TranslucentAsset& asset, std::uint64_t seed) {
     std::array<std::vector<float>, 3> compressed;
     for (int c = 0; c < 3; ++c) compressed[c] = applyTransfer(asset.transfer, asset.layout, s[c], irradiance);
 
-    // The exact sum_k s_k sum_i b_k(|x_o - x_i|) A_i E_i at each output of the subset.
-    // The diagonal T_k[o][o] integrates b_k over the sample's own disk, as the bake does.
+    // The self term R_disk(rho_o) E_o, which the relighter adds to the product of the
+    // matrices (SelfTerm::AtRunTime), on both sides: the error is the compression's,
+    // relative to all the light a sample returns.
+    std::vector<float> self(3 * n);
+    selfTermReflectance(asset.samples, asset.unitsPerMm, asset.defaultMaterial, self);
+    for (int c = 0; c < 3; ++c)
+        for (std::size_t i = 0; i < n; ++i) compressed[c][i] += self[3 * i + std::size_t(c)] * irradiance[i];
+
+    // The exact sum_k s_k sum_{i != o} b_k(|x_o - x_i|) A_i E_i + R_disk E_o at each output.
     const int K = asset.basis.K();
     const double toMm = 1.0 / asset.unitsPerMm;
-    std::vector<float> subsetAreas(subset.size());
-    for (std::size_t q = 0; q < subset.size(); ++q) subsetAreas[q] = float(asset.samples[subset[q]].area * toMm * toMm);
-    const std::vector<float> self = transferSelfTerms(subsetAreas, asset.basis);
     std::vector<std::array<double, 3>> exact(subset.size());
     tbb::parallel_for(std::size_t(0), subset.size(), [&](std::size_t q) {
         const std::size_t o = subset[q];
         std::vector<float> b(static_cast<std::size_t>(K));
         std::array<double, 3> sum{0.0, 0.0, 0.0};
         for (std::size_t i = 0; i < n; ++i) {
+            if (i == o) continue;
             lookup.evaluate(float((asset.samples[i].position - asset.samples[o].position).length() * toMm), b.data());
-            double weight = asset.samples[i].area * toMm * toMm * irradiance[i];
-            if (i == o) {
-                for (int k = 0; k < K; ++k) b[std::size_t(k)] = self[q * std::size_t(K) + std::size_t(k)];
-                weight = irradiance[i];
-            }
+            const double weight = asset.samples[i].area * toMm * toMm * irradiance[i];
             for (int c = 0; c < 3; ++c) {
                 double profile = 0.0;
                 for (int k = 0; k < K; ++k) profile += s[c][std::size_t(k)] * b[std::size_t(k)];
                 sum[c] += profile * weight;
             }
         }
+        for (int c = 0; c < 3; ++c) sum[c] += double(self[3 * o + std::size_t(c)]) * irradiance[o];
         exact[q] = sum;
     });
     double errorSq = 0.0, exactSq = 0.0;

@@ -72,7 +72,8 @@ void writeBakedAsset(const std::filesystem::path& stem, const TranslucentAsset& 
 
 // compressed vs exact transfer: RMS over >= 512 random output samples and RGB of the
 // difference between sum_k s_k (T_k E) computed through the compressed transfer and
-// exactly, for a point light's irradiance, relative to the exact RMS.
+// exactly, for a point light's irradiance, relative to the exact RMS; both sides add the
+// self term the relighter adds (SelfTerm::AtRunTime, which this requires).
 double measureTransferError(const TranslucentAsset& asset, std::uint64_t seed);
 
 }  // namespace opal

@@ -13,7 +13,6 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
-#include <numbers>
 #include <vector>
 
 namespace opal {
@@ -26,19 +25,6 @@ struct Step1Rows {
     std::vector<std::uint32_t> column;  // N x perRow, ascending within a row
     std::vector<float> value;
 };
-
-// The samples in mm (transfer_row.h) and selfTerm[o * K + k] = T_k[o][o], the profile
-// integrated over the sample's own disk.
-struct SamplesMm {
-    TransferSamples samples;
-    std::vector<float> selfTerm;
-};
-
-SamplesMm toMillimetres(std::span<const SurfaceSample> samples, double unitsPerMm, const ProfileBasis& basis) {
-    SamplesMm mm{toTransferSamples(samples, unitsPerMm), {}};
-    mm.selfTerm = transferSelfTerms(mm.samples.area, basis);
-    return mm;
-}
 
 // lambda_k / lambda_1 per basis function, clamped at 0 (all 1 for a zero spectrum): how
 // much T_k matters in L = sum_k s_k T_k E, for both steps' weighting.
@@ -86,10 +72,10 @@ std::vector<std::uint32_t> step1Budgets(double averagePerRow, std::size_t n, con
     return perRow;
 }
 
-std::vector<Step1Rows> compressLightDimension(const SamplesMm& mm, const ChartLayout& layout,
+std::vector<Step1Rows> compressLightDimension(const TransferSamples& samples, const ChartLayout& layout,
                                               const BasisLookup& lookup, std::span<const std::uint32_t> perRow,
                                               ProgressSink* progress, const CancelToken& cancel) {
-    const std::size_t n = mm.samples.size();
+    const std::size_t n = samples.size();
     const int K = lookup.K();
     std::vector<Step1Rows> rows(K);
     for (int k = 0; k < K; ++k) {
@@ -117,10 +103,10 @@ std::vector<Step1Rows> compressLightDimension(const SamplesMm& mm, const ChartLa
         const std::span<float> all(buf.data(), rowsSize);
         const std::span<float> weighted(buf.data() + rowsSize, n);
         for (std::size_t o = range.begin(); o != range.end(); ++o) {
-            transferRow(o, mm.samples, lookup, all, stride);
+            transferRow(o, samples, lookup, all, stride);
             for (int k = 0; k < K; ++k) {
                 const std::span<float> row(buf.data() + std::size_t(k) * stride, n);
-                row[o] = mm.selfTerm[o * std::size_t(K) + std::size_t(k)];
+                row[o] = 0.0f;  // the self term is added at run time (transfer_builder.h)
                 haarForwardCharts(row, layout);
                 for (std::size_t c = 0; c < n; c += cellsPerChart)
                     for (std::size_t q = 0; q < cellsPerChart; ++q) weighted[c + q] = row[c + q] * importance[q];
@@ -373,19 +359,6 @@ CompressedTransfer compressSpatialDimension(std::vector<Step1Rows>& step1, const
 
 }  // namespace
 
-std::vector<float> transferSelfTerms(std::span<const float> areasMm2, const ProfileBasis& basis) {
-    const std::size_t K = std::size_t(basis.K());
-    std::vector<float> terms(areasMm2.size() * K);
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, areasMm2.size(), 1024), [&](const auto& range) {
-        std::vector<double> integral(K);
-        for (std::size_t o = range.begin(); o != range.end(); ++o) {
-            basis.diskIntegrals(std::sqrt(double(areasMm2[o]) / std::numbers::pi), integral);
-            for (std::size_t k = 0; k < K; ++k) terms[o * K + k] = float(integral[k]);
-        }
-    });
-    return terms;
-}
-
 CompressedTransfer buildTransfer(std::span<const SurfaceSample> samples, const ChartLayout& layout,
                                  double unitsPerMm, const ProfileBasis& basis,
                                  const TransferSettings& settings, ProgressSink* progress,
@@ -400,7 +373,7 @@ CompressedTransfer buildTransfer(std::span<const SurfaceSample> samples, const C
         throw Error("transfer: energy fraction must be in (0, 1], got " + std::to_string(settings.energyFraction));
     if (basis.K() > 64) throw Error("transfer: at most 64 basis functions are supported");
 
-    const SamplesMm mm = toMillimetres(samples, unitsPerMm, basis);
+    const TransferSamples mm = toTransferSamples(samples, unitsPerMm);
     const BasisLookup lookup(basis);
     const double fractionPerRow = settings.keepFraction * double(n);
     const double averagePerRow = std::max(fractionPerRow, double(settings.minPerRow));
@@ -412,6 +385,7 @@ CompressedTransfer buildTransfer(std::span<const SurfaceSample> samples, const C
         compressSpatialDimension(step1, layout, basis, settings.energyFraction, progress, cancel, &energyKept);
     out.keepFraction = settings.keepFraction;
     out.energyFraction = settings.energyFraction;
+    out.selfTerm = SelfTerm::AtRunTime;
     if (stats) {
         const std::uint64_t entryBytes = sizeof(std::uint32_t) + sizeof(float);
         stats->rawBytes = std::uint64_t(n) * n * basis.K() * sizeof(float);

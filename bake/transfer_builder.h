@@ -12,10 +12,11 @@
 //          (weighted by what a coefficient contributes to L = sum_k s_k T_k E:
 //          transfer_builder.cpp); the transfer's relative error is about
 //          sqrt(1 - energyFraction).
-// The diagonal is the exception to point quadrature: a sample gathers its own light over
-// its own area, T_k[o][o] = integral over the disk of area A_o of b_k (transferSelfTerms);
-// b_k(0) A_o would weigh the profile's peak by the whole area and brighten coarse samplings
-// several times over.
+// The diagonal is left out (T_k[o][o] = 0, SelfTerm::AtRunTime): a sample gathers its own
+// light over its own area, a disk, and the relighter adds that with the current material's
+// exact dipole (schema/asset/self_term.h). Through the basis it was the largest error at the
+// short end of the editable range (docs/ARCHITECTURE.md#self-term), and its spike on every
+// row's diagonal is what the spatial 9/7 step compresses worst.
 // The result is ^{w1}T_k^{w0^-1}, one sparse matrix per k (rows: 9/7 coefficients of the
 // output, columns: Haar coefficients of the light).
 #pragma once
@@ -57,10 +58,6 @@ struct TransferStats {
     double step1PerRow = 0.0;      // Haar coefficients kept per row, averaged over k
     bool step1Floor = false;       // the count is the minPerRow floor, not keepFraction x N
 };
-
-// T_k[o][o] = integral_0^rho b_k(r) 2 pi r dr with rho = sqrt(A_o / pi), for sample areas
-// in mm^2: areas.size() x K values, sample-major.
-std::vector<float> transferSelfTerms(std::span<const float> areasMm2, const ProfileBasis& basis);
 
 // samples are in grid order (layout.cells() of them), positions in scene units.
 CompressedTransfer buildTransfer(std::span<const SurfaceSample> samples, const ChartLayout& layout,

@@ -1,6 +1,7 @@
 #include "delegate/relight/relight_engine.h"
 
 #include "delegate/relight/float4.h"
+#include "schema/asset/self_term.h"
 #include "schema/error.h"
 #include "schema/scatter/fresnel_moments.h"
 #include "schema/wavelet/cdf97.h"
@@ -90,6 +91,11 @@ std::vector<std::string> RelightEngine::setMaterial(const Material& material) {
     profile_.assign(3 * paddedK_, 0.0f);
     for (int c = 0; c < 3; ++c)
         for (std::size_t k = 0; k < K_; ++k) profile_[c * paddedK_ + k] = float(s[c][k] / std::numbers::pi);
+    if (asset_->transfer.selfTerm == SelfTerm::AtRunTime) {
+        self_.resize(samples_ * 3);
+        selfTermReflectance(asset_->samples, asset_->unitsPerMm, clamped, self_);
+        for (float& r : self_) r = float(r / std::numbers::pi);
+    }
     const bool etaChanged = clamped.eta != material_.eta;
     material_ = clamped;
     if (etaChanged) fresnel_ = fresnelMoments(material_.eta, int(moments_.terms), moments_.basis);
@@ -145,6 +151,8 @@ void RelightEngine::formRadiance(bool reweigh) {
         weighProducts(reweigh, r.begin(), r.end());
     });
     cdf97InverseCharts(std::span<float>(radiance_), asset_->layout, 3);
+    if (reweigh) irradiance_ = moments_.combine(fresnel_);
+    addSelfTerm();
     requireFinite(radiance_);
     const VertexWeights& weights = asset_->vertexWeights;
     if (vertexRadiance_.use_count() > 1) {
@@ -155,7 +163,13 @@ void RelightEngine::formRadiance(bool reweigh) {
     }
     vertexRadiance_->resize(weights.offsets.empty() ? 0 : (weights.offsets.size() - 1) * 3);
     if (!vertexRadiance_->empty()) interpolateToVertices(weights, radiance_, *vertexRadiance_, &padded_);
-    if (reweigh) irradiance_ = moments_.combine(fresnel_);
+}
+
+// L(x_o) += (1/pi) R_disk(rho_o; sigma) E(x_o; eta), in the sample domain (after the 9/7
+// inverse): the self term the bake left out of the transfer (docs/ARCHITECTURE.md#self-term).
+void RelightEngine::addSelfTerm() {
+    if (self_.empty()) return;
+    for (std::size_t i = 0; i < samples_ * 3; ++i) radiance_[i] += self_[i] * irradiance_[i];
 }
 
 void interpolateToVertices(const VertexWeights& weights, std::span<const float> perSample, std::span<float> out,

@@ -7,6 +7,8 @@
 //   setMaterial:    s_k(sigma, eta) per channel (ProfileBasis::project), c_m(eta)
 //                   z_k = sum_m c_m y_{k,m}            only when eta changes
 //                   L = w1^-1 ((1/pi) sum_k s_k z_k)   CDF 9/7 inverse per chart
+//                   L += (1/pi) R_disk(sigma) E(eta)   the self term, when the asset
+//                                                      leaves it to run time (self_term.h)
 //
 // L is the subsurface radiance leaving each sample before the outgoing Fresnel factor
 // F_t(eta, w_o), which the render pass applies per pixel:
@@ -58,6 +60,7 @@ private:
     void formRadiance(bool reweigh);  // L = w1^-1 ((1/pi) sum_k s_k z_k), then the vertices
     void requireFinite(std::span<const float> radiance) const;
     void weighProducts(bool reweigh, std::size_t begin, std::size_t end);
+    void addSelfTerm();
 
     std::shared_ptr<const TranslucentAsset> asset_;
     TransferProduct product_;        // the transfer, compact for y_k (transfer_product.h)
@@ -71,6 +74,7 @@ private:
     Material material_;
     std::vector<double> fresnel_;    // c_m(material_.eta)
     std::vector<float> profile_;     // s_k / pi: 3 x paddedK
+    std::vector<float> self_;        // R_disk(rho_o; sigma) / pi: samples x 3 (empty: in the transfer)
     std::vector<float> radiance_, irradiance_;
     std::shared_ptr<std::vector<float>> vertexRadiance_ = std::make_shared<std::vector<float>>();
     std::shared_ptr<std::vector<float>> spareVertexRadiance_;

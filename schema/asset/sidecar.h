@@ -17,8 +17,9 @@
 namespace opal {
 
 // 2.0: transfer values on a quantization grid, environment values as half planes (1.0
-// stored both as float planes). 2.1 adds the optional BKID chunk (the bake identifier).
-inline constexpr FileKind kSidecarKind{"SCAT", {2, 2}};
+// stored both as float planes). 2.1 adds the optional BKID chunk (the bake identifier),
+// 2.2 the optional FBAS chunk, 2.3 the SELF chunk.
+inline constexpr FileKind kSidecarKind{"SCAT", {2, 3}};
 
 // The chunk tags (all required in version 2.0, except BKID: optional, from 2.1).
 namespace sidecar_chunk {
@@ -31,6 +32,10 @@ inline constexpr ChunkTag kEnvironment{"ENVT"};
 inline constexpr ChunkTag kBakeId{"BKID"};
 // Optional (2.2): the environment vectors' Fresnel basis, u32 (FresnelBasis); absent: Legendre.
 inline constexpr ChunkTag kFresnelBasis{"FBAS"};
+// 2.3: where the transfer's self term lives, u32 (SelfTerm); absent: in the transfer.
+// Written flagged required when the self term is left to run time: a reader that does not
+// know the chunk would render without it, so it must refuse the file instead.
+inline constexpr ChunkTag kSelfTerm{"SELF"};
 }  // namespace sidecar_chunk
 
 struct SidecarWriteOptions {

@@ -13,7 +13,7 @@ namespace {
 using namespace sidecar_chunk;
 
 constexpr ChunkTag kKnownChunks[] = {kHeader, kLayout, kSamples, kVertexWeights, kTransfer, kEnvironment, kBakeId,
-                                     kFresnelBasis};
+                                     kFresnelBasis, kSelfTerm};
 
 struct Payload {
     ChartLayout layout;
@@ -158,6 +158,14 @@ FresnelBasis readFresnelBasis(ChunkSource src) {
     return FresnelBasis(basis);
 }
 
+SelfTerm readSelfTerm(ChunkSource src) {
+    const std::uint32_t self = src.readU32();
+    if (self != std::uint32_t(SelfTerm::InTransfer) && self != std::uint32_t(SelfTerm::AtRunTime))
+        src.fail("unknown self-term placement " + str(self) + " (0 in the transfer, 1 at run time)");
+    src.finish();
+    return SelfTerm(self);
+}
+
 }  // namespace
 
 SidecarHeader readSidecar(const std::filesystem::path& path, TranslucentAsset& asset) {
@@ -173,6 +181,7 @@ SidecarHeader readSidecar(const std::filesystem::path& path, TranslucentAsset& a
     p.transfer = readTransfer(file.open(kTransfer), p.layout, header.basisCount);
     p.environment = readEnvironment(file.open(kEnvironment), samples);
     if (file.find(kFresnelBasis)) p.environment.fresnelBasis = readFresnelBasis(file.open(kFresnelBasis));
+    if (file.find(kSelfTerm)) p.transfer.selfTerm = readSelfTerm(file.open(kSelfTerm));
     asset.layout = p.layout;
     asset.samples = std::move(p.samples);
     asset.vertexWeights = std::move(p.vertexWeights);

@@ -115,6 +115,9 @@ void writeSidecar(const std::filesystem::path& path, const TranslucentAsset& a,
     if (a.environment.fresnelBasis != FresnelBasis::Legendre)  // optional: readers older than 2.2 skip it
         all.push_back({kFresnelBasis, ChunkCodec::Raw, false,
                        [&](ChunkSink& s) { s.writeU32(std::uint32_t(a.environment.fresnelBasis)); }});
+    if (a.transfer.selfTerm != SelfTerm::InTransfer)  // required: see sidecar.h
+        all.push_back({kSelfTerm, ChunkCodec::Raw, true,
+                       [&](ChunkSink& s) { s.writeU32(std::uint32_t(a.transfer.selfTerm)); }});
     writeChunkedFile(path, kSidecarKind, all, {options.zstdLevel});
 }
 

@@ -47,6 +47,13 @@ struct VertexWeights {
 // function k, ^{w1}T_k^{w0^-1}. Rows are CDF 9/7 coefficients of the output (spatial) dimension,
 // columns Haar coefficients of the light dimension, both in the chart layout: every matrix is
 // samples x samples, with strictly ascending columns within each row.
+//
+// Where the diagonal T_k[o][o] (a sample's own light, gathered over its own disk) lives
+// (docs/ARCHITECTURE.md#self-term): in the matrices, as the basis' disk integrals
+// (sidecars before 2.3), or left out of them (T_k[o][o] = 0) and added at run time with
+// the current material's exact dipole disk reflectance (self_term.h).
+enum class SelfTerm : std::uint32_t { InTransfer = 0, AtRunTime = 1 };
+
 struct CompressedTransfer {
     std::vector<SparseMatrix> perBasis;  // K
     // Per matrix, the step of the grid its values are stored on (transfer_value_grid.h);
@@ -54,6 +61,7 @@ struct CompressedTransfer {
     std::vector<double> valueSteps;
     double keepFraction = 0.01;          // step 1
     double energyFraction = 0.99995;     // step 2
+    SelfTerm selfTerm = SelfTerm::InTransfer;
 
     double valueStep(std::size_t k) const { return k < valueSteps.size() ? valueSteps[k] : 0.0; }
 };

@@ -197,6 +197,36 @@ TEST(Sidecar, FresnelBasisRoundTripsAndDefaultsToLegendre) {
                    {"unknown.opal", "FBAS", "unknown Fresnel basis 7"});
 }
 
+// Where the transfer's self term lives travels in chunk SELF, flagged required when it is
+// left to run time (a reader that skipped it would render without the self term); a
+// sidecar without it (every one written before 2.3) holds it in the transfer.
+TEST(Sidecar, SelfTermPlacementRoundTripsAndDefaultsToInTheTransfer) {
+    TempDir dir;
+    TranslucentAsset original = test::syntheticAsset();
+    roundToStoredPrecision(original);
+    original.transfer.selfTerm = SelfTerm::AtRunTime;
+    writeSidecar(dir / "runtime.opal", original);
+    TranslucentAsset loaded;
+    readSidecar(dir / "runtime.opal", loaded);
+    EXPECT_EQ(loaded.transfer.selfTerm, SelfTerm::AtRunTime);
+    const ChunkedFileReader file(dir / "runtime.opal", kSidecarKind);
+    ASSERT_TRUE(file.find(sidecar_chunk::kSelfTerm));
+    EXPECT_TRUE(file.find(sidecar_chunk::kSelfTerm)->required);
+
+    original.transfer.selfTerm = SelfTerm::InTransfer;
+    writeSidecar(dir / "intransfer.opal", original);
+    TranslucentAsset old;
+    old.transfer.selfTerm = SelfTerm::AtRunTime;  // overwritten by the read
+    readSidecar(dir / "intransfer.opal", old);
+    EXPECT_EQ(old.transfer.selfTerm, SelfTerm::InTransfer);
+    EXPECT_FALSE(ChunkedFileReader(dir / "intransfer.opal", kSidecarKind).find(sidecar_chunk::kSelfTerm));
+
+    original.transfer.selfTerm = SelfTerm(5);
+    writeSidecar(dir / "unknown.opal", original);
+    expectContains(errorOf([&] { readSidecar(dir / "unknown.opal", loaded); }),
+                   {"unknown.opal", "SELF", "unknown self-term placement 5"});
+}
+
 TEST(Sidecar, TwoWritesAreByteIdentical) {
     TempDir dir;
     TranslucentAsset a = test::syntheticAsset();

@@ -46,7 +46,6 @@ std::vector<std::vector<double>> exactGather(const TranslucentAsset& asset, cons
     const double toMm = 1.0 / asset.unitsPerMm;
     std::vector<std::vector<double>> y(std::size_t(K), std::vector<double>(n, 0.0));
     std::vector<float> b(static_cast<std::size_t>(K));
-    std::vector<double> self(static_cast<std::size_t>(K));
     for (std::size_t o = 0; o < n; ++o) {
         const Imath::V3d xo(asset.samples[o].position);
         for (std::size_t i = 0; i < n; ++i) {
@@ -56,9 +55,7 @@ std::vector<std::vector<double>> exactGather(const TranslucentAsset& asset, cons
             const double weight = double(asset.samples[i].area) * toMm * toMm * irradiance[i];
             for (int k = 0; k < K; ++k) y[std::size_t(k)][o] += double(b[std::size_t(k)]) * weight;
         }
-        // The diagonal: b_k integrated over the sample's own disk (ProfileBasis, in double).
-        asset.basis.diskIntegrals(std::sqrt(double(asset.samples[o].area) / std::numbers::pi) * toMm, self);
-        for (int k = 0; k < K; ++k) y[std::size_t(k)][o] += self[std::size_t(k)] * irradiance[o];
+        // The diagonal is 0: the relighter adds the self term (SelfTerm::AtRunTime).
     }
     return y;
 }
@@ -190,6 +187,7 @@ TEST_F(ExactCandle, KeepingEverythingReproducesTheExactGatherPerBasisFunction) {
     EXPECT_EQ(a.transfer.keepFraction, 1.0);
     EXPECT_EQ(a.transfer.energyFraction, 1.0);
     EXPECT_NEAR(report_->transfer.energyKept, 1.0, 1e-12);
+    EXPECT_EQ(a.transfer.selfTerm, SelfTerm::AtRunTime);  // the diagonal is 0 in exactGather
 
     for (int k = 0; k < K; ++k) {
         const std::vector<float> y = applyTransfer(a.transfer, a.layout, unitVector(K, k), *irradiance_);

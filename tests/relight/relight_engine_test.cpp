@@ -1,6 +1,7 @@
 #include "delegate/relight/relight_engine.h"
 
 #include "schema/error.h"
+#include "schema/scatter/dipole.h"
 #include "synthetic_asset.h"
 
 #include <gtest/gtest.h>
@@ -11,16 +12,18 @@
 namespace opal {
 namespace {
 
-// A slab of 2 charts of 16 x 16 samples, 0.25 mm apart, with the lossless transfer.
-std::shared_ptr<TranslucentAsset> slabAsset(double keepFraction = 1.0, double energyFraction = 1.0) {
+// A slab of 2 charts of 16 x 16 samples, 0.25 mm apart (spacing in scene units of 0.1 mm),
+// with the lossless transfer.
+std::shared_ptr<TranslucentAsset> slabAsset(double keepFraction = 1.0, double energyFraction = 1.0,
+                                            SelfTerm selfTerm = SelfTerm::InTransfer, float spacing = 2.5f) {
     auto asset = std::make_shared<TranslucentAsset>();
     asset->name = "slab";
     asset->unitsPerMm = 10.0;  // scene units are 0.1 mm
-    test::makeSlab(*asset, 2, 1, 4, 2.5f);
+    test::makeSlab(*asset, 2, 1, 4, spacing);
     asset->defaultMaterial = Material{{1.0, 0.8, 0.6}, {0.05, 0.1, 0.2}, 1.3};
     asset->range = test::rangeAround(asset->defaultMaterial, 3.0, 1.2, 1.6);
     asset->basis = test::fitBasis(asset->range, 8, 12.0);
-    test::buildTransfer(*asset, keepFraction, energyFraction);
+    test::buildTransfer(*asset, keepFraction, energyFraction, selfTerm);
     // Each vertex blends two samples.
     const std::size_t n = asset->samples.size();
     for (std::size_t v = 0; v < n; ++v) {
@@ -37,14 +40,22 @@ std::shared_ptr<TranslucentAsset> slabAsset(double keepFraction = 1.0, double en
 // <= 2^-11 per entry), so it matches this to kHalfProduct rather than float precision.
 constexpr double kHalfProduct = 1e-3;
 
+// With the self term left to run time, the diagonal is the dipole's disk reflectance
+// (closed form, docs/ARCHITECTURE.md#total-reflectance) times E_o.
 std::vector<float> directRadiance(const TranslucentAsset& asset, const Material& material,
                                   const IrradianceMoments& moments) {
     const std::size_t n = asset.samples.size();
     const std::vector<float> e = moments.combine(fresnelMoments(material.eta, int(moments.terms)));
     const std::array<std::vector<double>, 3> s = asset.basis.project(material);
     std::vector<double> sum(3 * n, 0.0);
+    if (asset.transfer.selfTerm == SelfTerm::AtRunTime)
+        for (std::size_t o = 0; o < n; ++o)
+            for (int c = 0; c < 3; ++c) {
+                const double radius = std::sqrt(asset.samples[o].area / std::numbers::pi) / asset.unitsPerMm;
+                sum[3 * o + c] = dipoleDiskReflectance(radius, material.channel(c)) * e[3 * o + c];
+            }
     for (int k = 0; k < asset.basis.K(); ++k) {
-        const std::vector<double> t = test::denseTransfer(asset, k);
+        const std::vector<double> t = test::denseTransfer(asset, k, asset.transfer.selfTerm);
         for (std::size_t o = 0; o < n; ++o)
             for (std::size_t i = 0; i < n; ++i)
                 for (int c = 0; c < 3; ++c) sum[3 * o + c] += s[c][k] * t[o * n + i] * e[3 * i + c];
@@ -103,6 +114,25 @@ TEST(RelightEngine, MaterialEditsEqualAFullRecompute) {
         EXPECT_LT(test::maxRelative(edited.sampleRadiance(), fresh.sampleRadiance()), 1e-5);
         EXPECT_LT(test::maxRelative(edited.sampleRadiance(), directRadiance(*asset, m, moments)), kHalfProduct);
         EXPECT_LT(test::maxRelative(edited.vertexRadiance(), fresh.vertexRadiance()), 1e-5);
+    }
+}
+
+// The self term left to run time is the dipole's exact disk reflectance of the current
+// material, through sigma and eta edits alike. (At the short corner the s_k are large and
+// of both signs, so the binary16 products' rounding cancels less: 1.09e-3 there, and
+// 1.25e-3 with the self term in the transfer.)
+TEST(RelightEngine, SelfTermAtRunTimeIsTheDiskReflectanceOfTheCurrentMaterial) {
+    const auto asset = slabAsset(1.0, 1.0, SelfTerm::AtRunTime);
+    const IrradianceMoments moments = test::randomMoments(std::uint32_t(asset->samples.size()), 2, 7);
+    RelightEngine engine(asset);
+    engine.setIrradiance(moments);
+    EXPECT_LT(test::maxRelative(engine.sampleRadiance(), directRadiance(*asset, asset->defaultMaterial, moments)),
+              kHalfProduct);
+    for (const Material& m : {Material{{2.9, 2.5, 2.0}, {0.5, 0.4, 0.3}, 1.3},     // the short corner
+                              Material{{0.4, 0.35, 0.3}, {0.02, 0.04, 0.07}, 1.5}}) { // long, other eta
+        EXPECT_TRUE(engine.setMaterial(m).empty());
+        EXPECT_LT(test::maxRelative(engine.sampleRadiance(), directRadiance(*asset, m, moments)), 1.5 * kHalfProduct)
+            << m.sigmaSPrime[0];
     }
 }
 

@@ -89,8 +89,10 @@ inline ProfileBasis fitBasis(const EditableRange& range, int K, double rMax) {
 }
 
 // The dense T_k[o][i] = b_k(|x_o - x_i|) A_i (mm, mm^2) of docs/ARCHITECTURE.md#transfer, one k;
-// the diagonal integrates b_k over the sample's own disk of area A_o, as the bake does.
-inline std::vector<double> denseTransfer(const TranslucentAsset& asset, int k) {
+// the diagonal integrates b_k over the sample's own disk of area A_o (sidecars before 2.3),
+// or is 0 when the self term is left to run time (as bakes do now).
+inline std::vector<double> denseTransfer(const TranslucentAsset& asset, int k,
+                                         SelfTerm selfTerm = SelfTerm::InTransfer) {
     const std::size_t n = asset.samples.size();
     const double toMm = 1.0 / asset.unitsPerMm;
     std::vector<double> t(n * n);
@@ -101,7 +103,7 @@ inline std::vector<double> denseTransfer(const TranslucentAsset& asset, int k) {
         }
         std::vector<double> self(std::size_t(asset.basis.K()));
         asset.basis.diskIntegrals(std::sqrt(asset.samples[o].area / std::numbers::pi) * toMm, self);
-        t[o * n + o] = self[std::size_t(k)];
+        t[o * n + o] = selfTerm == SelfTerm::InTransfer ? self[std::size_t(k)] : 0.0;
     });
     return t;
 }
@@ -145,10 +147,13 @@ inline SparseMatrix compressTransfer(const std::vector<double>& dense, const Cha
     return result;
 }
 
-inline void buildTransfer(TranslucentAsset& asset, double keepFraction, double energyFraction) {
+inline void buildTransfer(TranslucentAsset& asset, double keepFraction, double energyFraction,
+                          SelfTerm selfTerm = SelfTerm::InTransfer) {
     asset.transfer.perBasis.clear();
+    asset.transfer.selfTerm = selfTerm;
     for (int k = 0; k < asset.basis.K(); ++k)
-        asset.transfer.perBasis.push_back(compressTransfer(denseTransfer(asset, k), asset.layout, keepFraction, energyFraction));
+        asset.transfer.perBasis.push_back(
+            compressTransfer(denseTransfer(asset, k, selfTerm), asset.layout, keepFraction, energyFraction));
 }
 
 // Environment transport vectors T_m(w) = V(x, w) mu P_m(mu) dOmega (Haar per face), as the

@@ -1,0 +1,32 @@
+#include "schema/asset/self_term.h"
+
+#include "schema/error.h"
+#include "schema/scatter/dipole.h"
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+namespace opal {
+
+void selfTermReflectance(std::span<const SurfaceSample> samples, double unitsPerMm, const Material& material,
+                         std::span<float> out) {
+    if (out.size() != 3 * samples.size())
+        throw Error("self term: " + std::to_string(out.size()) + " outputs for " + std::to_string(samples.size()) +
+                    " RGB samples");
+    if (!(unitsPerMm > 0.0 && std::isfinite(unitsPerMm)))
+        throw Error("self term: units per mm must be positive and finite, got " + std::to_string(unitsPerMm));
+    const double toMm = 1.0 / unitsPerMm;
+    float area = -1.0f;  // no sample has a negative area: the first one evaluates
+    float reflectance[3] = {0.0f, 0.0f, 0.0f};
+    for (std::size_t o = 0; o < samples.size(); ++o) {
+        if (samples[o].area != area) {
+            area = samples[o].area;
+            const double radius = std::sqrt(double(area) / std::numbers::pi) * toMm;
+            for (int c = 0; c < 3; ++c) reflectance[c] = float(dipoleDiskReflectance(radius, material.channel(c)));
+        }
+        for (int c = 0; c < 3; ++c) out[3 * o + std::size_t(c)] = reflectance[c];
+    }
+}
+
+}  // namespace opal
