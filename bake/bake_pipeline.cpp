@@ -15,6 +15,7 @@
 #include "schema/asset/cube_map.h"
 #include "schema/asset/point_range.h"
 #include "schema/asset/self_term.h"
+#include "schema/scatter/profile_projection.h"
 #include "schema/asset/sidecar.h"
 #include "schema/asset/transfer_apply.h"
 #include "schema/usd/crash_point.h"
@@ -281,7 +282,8 @@ double measureTransferError(const TranslucentAsset& asset, std::uint64_t seed) {
         if (random.uniformDouble() * double(n - i) < double(wanted - subset.size())) subset.push_back(i);
 
     const BasisLookup lookup(asset.basis);
-    const std::array<std::vector<double>, 3> s = asset.basis.project(asset.defaultMaterial);
+    const std::array<std::vector<double>, 3> s =
+        ProfileProjection(asset.basis, profileFitRadius(asset)).project(asset.defaultMaterial);
     std::array<std::vector<float>, 3> compressed;
     for (int c = 0; c < 3; ++c) compressed[c] = applyTransfer(asset.transfer, asset.layout, s[c], irradiance);
 

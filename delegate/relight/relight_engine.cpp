@@ -51,7 +51,9 @@ TransferProduct checkedTransfer(const std::shared_ptr<const TranslucentAsset>& a
 }  // namespace
 
 RelightEngine::RelightEngine(std::shared_ptr<const TranslucentAsset> asset)
-    : asset_(std::move(asset)), product_(checkedTransfer(asset_)) {
+    : asset_(std::move(asset)),
+      product_(checkedTransfer(asset_)),
+      projection_(asset_->basis, profileFitRadius(*asset_)) {
     samples_ = asset_->samples.size();
     K_ = asset_->transfer.perBasis.size();
     paddedK_ = (K_ + 3) / 4 * 4;
@@ -87,7 +89,7 @@ void RelightEngine::setIrradiance(const IrradianceMoments& irradiance) {
 std::vector<std::string> RelightEngine::setMaterial(const Material& material) {
     std::vector<std::string> warnings;
     const Material clamped = asset_->range.clamp(material, &warnings);
-    const std::array<std::vector<double>, 3> s = asset_->basis.project(clamped);  // s_k(sigma, eta)
+    const std::array<std::vector<double>, 3> s = projection_.project(clamped);  // s_k(sigma, eta)
     profile_.assign(3 * paddedK_, 0.0f);
     for (int c = 0; c < 3; ++c)
         for (std::size_t k = 0; k < K_; ++k) profile_[c * paddedK_ + k] = float(s[c][k] / std::numbers::pi);

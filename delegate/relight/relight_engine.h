@@ -4,7 +4,7 @@
 //   setIrradiance:  wE_m = w0 E_m                     Haar per chart, every m and RGB
 //                   y_{k,m} = (w1 T_k w0^-1) wE_m      one pass over each sparse matrix
 //                                                      (TransferProduct), all m x RGB at once
-//   setMaterial:    s_k(sigma, eta) per channel (ProfileBasis::project), c_m(eta)
+//   setMaterial:    s_k(sigma, eta) per channel (ProfileProjection), c_m(eta)
 //                   z_k = sum_m c_m y_{k,m}            only when eta changes
 //                   L = w1^-1 ((1/pi) sum_k s_k z_k)   CDF 9/7 inverse per chart
 //                   L += (1/pi) R_disk(sigma) E(eta)   the self term, when the asset
@@ -21,6 +21,7 @@
 #include "delegate/relight/irradiance.h"
 #include "delegate/relight/transfer_product.h"
 #include "schema/asset/translucent_asset.h"
+#include "schema/scatter/profile_projection.h"
 
 #include <memory>
 #include <span>
@@ -64,6 +65,7 @@ private:
 
     std::shared_ptr<const TranslucentAsset> asset_;
     TransferProduct product_;        // the transfer, compact for y_k (transfer_product.h)
+    ProfileProjection projection_;   // s_k(sigma), fitted where the transfer uses the profile
     std::size_t samples_ = 0;
     std::size_t K_ = 0;
     std::size_t paddedK_ = 0;        // K rounded up to a multiple of 4

@@ -3,6 +3,7 @@
 #include "schema/error.h"
 #include "schema/scatter/dipole.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -27,6 +28,13 @@ void selfTermReflectance(std::span<const SurfaceSample> samples, double unitsPer
         }
         for (int c = 0; c < 3; ++c) out[3 * o + std::size_t(c)] = reflectance[c];
     }
+}
+
+double profileFitRadius(const TranslucentAsset& asset) {
+    if (asset.transfer.selfTerm != SelfTerm::AtRunTime || asset.samples.empty()) return 0.0;
+    float area = asset.samples[0].area;
+    for (const SurfaceSample& s : asset.samples) area = std::min(area, s.area);
+    return std::sqrt(std::max(double(area), 0.0) / std::numbers::pi) / asset.unitsPerMm;
 }
 
 }  // namespace opal

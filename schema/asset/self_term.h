@@ -20,4 +20,9 @@ namespace opal {
 void selfTermReflectance(std::span<const SurfaceSample> samples, double unitsPerMm, const Material& material,
                          std::span<float> out);
 
+// The radius in mm beyond which the asset's transfer matrices use the profile: the smallest
+// sample's disk radius sqrt(A_o / pi) when the self term is left to run time, else 0 (the
+// diagonal then uses the basis at r = 0). What ProfileProjection fits the profile beyond.
+double profileFitRadius(const TranslucentAsset& asset);
+
 }  // namespace opal

@@ -51,6 +51,18 @@ void requireDipoleEta(double eta, std::string_view context) {
     throw Error(out.str());
 }
 
+void requireDipoleCoefficients(const DipoleCoefficients& c, std::string_view context) {
+    const bool valid = std::isfinite(c.sigmaSPrime) && c.sigmaSPrime > 0.0 && std::isfinite(c.sigmaA) &&
+                       c.sigmaA > 0.0;
+    if (!valid) {
+        std::ostringstream out;
+        out << context << ": sigmaSPrime = " << c.sigmaSPrime << ", sigmaA = " << c.sigmaA
+            << ": coefficients must be positive and finite";
+        throw Error(out.str());
+    }
+    requireDipoleEta(c.eta, context);
+}
+
 // A = (1 + F_dr) / (1 - F_dr): the boundary mismatch term (docs/ARCHITECTURE.md#boundary).
 double boundaryMismatch(double eta) {
     const double fdr = fresnelDiffuseReflectance(eta);

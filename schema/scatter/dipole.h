@@ -39,6 +39,10 @@ double fresnelDiffuseReflectance(double eta);
 // increasing on [kDipoleEtaMin, kDipoleEtaMax]. Unchecked.
 double boundaryMismatch(double eta);
 
+// Throws opal::Error "<context>: sigmaSPrime = .., sigmaA = ..: coefficients must be positive
+// and finite" unless both are, and requireDipoleEta's error for eta.
+void requireDipoleCoefficients(const DipoleCoefficients& c, std::string_view context);
+
 // R_d(r): diffuse reflectance profile at distance r [mm], in mm^-2. No checks (a hot
 // function): c must hold positive finite coefficients and eta in [1, 3] (validateMaterial).
 double dipoleProfile(double r, const DipoleCoefficients& c);

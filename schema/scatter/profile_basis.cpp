@@ -101,18 +101,6 @@ RowMatrix normalizedProfiles(const RadialGrid& grid, const std::vector<DipoleCoe
     return profiles;
 }
 
-void requireValidChannel(const DipoleCoefficients& c) {
-    const bool valid = std::isfinite(c.sigmaSPrime) && c.sigmaSPrime > 0.0 && std::isfinite(c.sigmaA) &&
-                       c.sigmaA > 0.0;
-    if (!valid) {
-        std::ostringstream out;
-        out << "ProfileBasis::coefficients: sigmaSPrime = " << c.sigmaSPrime << ", sigmaA = " << c.sigmaA
-            << ": coefficients must be positive and finite";
-        throw Error(out.str());
-    }
-    requireDipoleEta(c.eta, "ProfileBasis::coefficients");
-}
-
 void requireFiniteNonNegative(const std::vector<double>& v, const char* name, bool positive = false) {
     for (std::size_t i = 0; i < v.size(); ++i)
         if (!std::isfinite(v[i]) || v[i] < 0.0 || (positive && v[i] == 0.0))
@@ -236,7 +224,7 @@ void ProfileBasis::diskIntegrals(double radius, std::span<double> out) const {
 
 // docs/ARCHITECTURE.md#pca: s0_k(sigma) = sum_l w_l R_d(r_l, sigma) b_k(r_l), the projection.
 std::vector<double> ProfileBasis::unconstrainedCoefficients(const DipoleCoefficients& c) const {
-    requireValidChannel(c);
+    requireDipoleCoefficients(c, "ProfileBasis::coefficients");
     const std::size_t L = radii_.size();
     std::vector<double> weighted(L);
     for (std::size_t l = 0; l < L; ++l) weighted[l] = weights_[l] * dipoleProfile(radii_[l], c);
@@ -263,7 +251,13 @@ std::vector<double> ProfileBasis::unconstrainedCoefficients(const DipoleCoeffici
 // The b_k are piecewise linear between the nodes, so a profile nonnegative at the nodes is
 // nonnegative at every r.
 std::vector<double> ProfileBasis::coefficients(const DipoleCoefficients& c) const {
-    std::vector<double> s = unconstrainedCoefficients(c);
+    return nonnegative(unconstrainedCoefficients(c));
+}
+
+std::vector<double> ProfileBasis::nonnegative(std::vector<double> s) const {
+    if (s.size() != std::size_t(K()))
+        throw Error("ProfileBasis::nonnegative: " + std::to_string(s.size()) + " coefficients for K = " +
+                    std::to_string(K()));
     const Eigen::Index L = static_cast<Eigen::Index>(radii_.size()), K = this->K();
     const Eigen::Map<const RowMatrix> Bt(values_.data(), K, L);  // row k: b_k(r_l)
     Eigen::Map<Eigen::VectorXd> s0(s.data(), K);

@@ -62,6 +62,10 @@ public:
     std::vector<double> coefficients(const DipoleCoefficients& c) const;
     // s0 alone (the profile may dip below 0 in its far tail).
     std::vector<double> unconstrainedCoefficients(const DipoleCoefficients& c) const;
+    // The nearest coefficients to s (K of them) whose profile is nonnegative at every r and
+    // has the same total reflectance: what coefficients() does to s0. Throws opal::Error
+    // when s.size() != K.
+    std::vector<double> nonnegative(std::vector<double> s) const;
     std::array<std::vector<double>, 3> project(const Material& m) const;
     // sum_k s_k b_k(r).
     double reconstruct(std::span<const double> s, double r) const;

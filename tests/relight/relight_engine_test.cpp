@@ -1,5 +1,6 @@
 #include "delegate/relight/relight_engine.h"
 
+#include "schema/asset/self_term.h"
 #include "schema/error.h"
 #include "schema/scatter/dipole.h"
 #include "synthetic_asset.h"
@@ -46,7 +47,8 @@ std::vector<float> directRadiance(const TranslucentAsset& asset, const Material&
                                   const IrradianceMoments& moments) {
     const std::size_t n = asset.samples.size();
     const std::vector<float> e = moments.combine(fresnelMoments(material.eta, int(moments.terms)));
-    const std::array<std::vector<double>, 3> s = asset.basis.project(material);
+    const std::array<std::vector<double>, 3> s =
+        ProfileProjection(asset.basis, profileFitRadius(asset)).project(material);  // plain when InTransfer
     std::vector<double> sum(3 * n, 0.0);
     if (asset.transfer.selfTerm == SelfTerm::AtRunTime)
         for (std::size_t o = 0; o < n; ++o)

@@ -20,6 +20,9 @@
 #include "raytrace/ray_scene.h"
 #include "delegate/relight/reference_gather.h"
 #include "delegate/relight/relight_engine.h"
+#include "schema/asset/self_term.h"
+#include "schema/scatter/dipole.h"
+#include "schema/scatter/profile_projection.h"
 #include "tests/bake/bake_test_support.h"
 #include "tests/bake/test_meshes.h"
 
@@ -138,17 +141,18 @@ MeshIrradiance irradianceOf(const std::shared_ptr<const TranslucentAsset>& asset
 
 // The lossless transfer's radiance summed directly, L(x_o) = (1/pi) sum_k s_k (T_k E)(x_o)
 // (docs/ARCHITECTURE.md#transfer), with T_k[o][i] = b_k(|x_o - x_i|) A_i off the diagonal
-// (BasisLookup, the table the bake evaluates) and T_k[o][o] = the integral of b_k over the sample's
-// own disk (transferSelfTerms). A bake with keep = energy = 1 stores exactly this matrix.
+// (BasisLookup, the table the bake evaluates) with s_k fitted beyond the sample's own disk
+// (ProfileProjection), and the self term the engine adds, the dipole's exact disk reflectance
+// (docs/ARCHITECTURE.md#self-term). A bake with keep = energy = 1 stores exactly this matrix.
 std::vector<float> basisGather(const TranslucentAsset& asset, const Material& material, std::span<const float> e) {
     const std::size_t n = asset.samples.size(), K = std::size_t(asset.basis.K());
-    const std::array<std::vector<double>, 3> s = asset.basis.project(material);
+    const std::array<std::vector<double>, 3> s =
+        ProfileProjection(asset.basis, profileFitRadius(asset)).project(material);
     const BasisLookup lookup(asset.basis);
     const double toMm = 1.0 / asset.unitsPerMm;
     std::vector<float> radiance(3 * n);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 16), [&](const tbb::blocked_range<std::size_t>& range) {
         std::vector<float> b(K);
-        std::vector<double> self(K);
         for (std::size_t o = range.begin(); o != range.end(); ++o) {
             const Imath::V3f xo = asset.samples[o].position;
             double sum[3] = {0.0, 0.0, 0.0};
@@ -162,10 +166,9 @@ std::vector<float> basisGather(const TranslucentAsset& asset, const Material& ma
                     sum[c] += profile * area * e[3 * i + c];
                 }
             }
-            asset.basis.diskIntegrals(std::sqrt(asset.samples[o].area / std::numbers::pi) * toMm, self);
+            const double radius = std::sqrt(asset.samples[o].area / std::numbers::pi) * toMm;
             for (int c = 0; c < 3; ++c) {
-                double disk = 0.0;
-                for (std::size_t k = 0; k < K; ++k) disk += s[c][k] * self[k];
+                const double disk = dipoleDiskReflectance(radius, material.channel(c));
                 radiance[3 * o + c] = float((sum[c] + disk * e[3 * o + c]) / std::numbers::pi);
             }
         }

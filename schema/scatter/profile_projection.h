@@ -1,0 +1,45 @@
+// The coefficients s_k(sigma) a relighter weighs the transfer matrices with, when the
+// transfer uses the profile only beyond the samples' own disks (docs/ARCHITECTURE.md#pca,
+// "Fit beyond the self disk"). The self term covers r < rho exactly, so the fit need not
+// reproduce the profile's peak there; and the s_k multiply the compressed T_k's errors, so
+// they are kept small where T_k is compressed coarsely (step 2 weighs matrix k by
+// lambda_k / lambda_1):
+//
+//     s0 = argmin  sum_{l: r_l >= rho} w_l (R_d(r_l) - sum_k s_k b_k(r_l))^2
+//                + mu sum_k (lambda_1 / lambda_k) s_k^2,                      mu = 1e-5
+//
+// then the nearest nonnegative profile (ProfileBasis::nonnegative). rho = 0 is the plain
+// projection, ProfileBasis::coefficients, bit for bit (no ridge): what assets whose
+// transfer holds the self term need.
+#pragma once
+
+#include "schema/scatter/profile_basis.h"
+
+#include <array>
+#include <vector>
+
+namespace opal {
+
+class ProfileProjection {
+public:
+    static constexpr double kRidge = 1e-5;  // mu
+
+    // innerRadius rho in mm. The basis must outlive the projection. Throws opal::Error for
+    // an empty basis or a negative or NaN radius.
+    ProfileProjection(const ProfileBasis& basis, double innerRadius);
+
+    double innerRadius() const { return rho_; }
+    // Same preconditions as ProfileBasis::coefficients.
+    std::vector<double> coefficients(const DipoleCoefficients& c) const;
+    // s0 alone, before the nonnegative step.
+    std::vector<double> unconstrainedCoefficients(const DipoleCoefficients& c) const;
+    std::array<std::vector<double>, 3> project(const Material& m) const;
+
+private:
+    const ProfileBasis* basis_;
+    double rho_ = 0.0;
+    std::size_t first_ = 0;      // the first node with r_l >= rho
+    std::vector<double> solve_;  // (G + mu D)^-1, K x K row-major; empty when rho = 0
+};
+
+}  // namespace opal
