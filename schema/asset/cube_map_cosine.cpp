@@ -5,27 +5,39 @@
 
 namespace opal {
 
+Imath::V3d CubeMapCosineIntegral::vectorSolidAngle(std::span<const Imath::V3d> corners) {
+    Imath::V3d sum(0.0);
+    for (std::size_t k = 0; k < corners.size(); ++k) {
+        const Imath::V3d& a = corners[k];
+        const Imath::V3d& b = corners[(k + 1) % corners.size()];
+        const Imath::V3d normal = a.cross(b);
+        const double sine = normal.length();
+        if (!(sine > 0.0)) continue;  // a repeated corner
+        sum += normal * (0.5 * std::atan2(sine, a.dot(b)) / sine);
+    }
+    return sum;
+}
+
 CubeMapCosineIntegral::CubeMapCosineIntegral(const CubeMapLayout& layout) {
     const std::uint32_t size = layout.faceSize();
-    const CubeMapLayout fine(std::min(size * kSplit, CubeMapLayout::kMaxFaceSize));
-    const std::uint32_t split = fine.faceSize() / size;
     for (std::uint32_t i = 0; i < layout.texels(); ++i) {
         const CubeMapTexel t = layout.texel(i);
-        const Imath::V3d centre(layout.direction(i));
+        const Imath::V3d centre = Imath::V3d(layout.direction(i)).normalized();
+        std::array<Imath::V3d, 4> corners;
         double cosHalf = 1.0;
-        for (int corner = 0; corner < 4; ++corner) {
-            const float s = 2.0f * float(t.u + (corner & 1)) / float(size) - 1.0f;
-            const float v = 2.0f * float(t.v + (corner >> 1)) / float(size) - 1.0f;
-            cosHalf = std::min(cosHalf, centre.dot(Imath::V3d(CubeMapLayout::faceDirection(t.face, s, v))));
+        for (int k = 0; k < 4; ++k) {  // around the texel's square on its face
+            const std::uint32_t du = k == 1 || k == 2, dv = k >= 2;
+            const float s = 2.0f * float(t.u + du) / float(size) - 1.0f;
+            const float v = 2.0f * float(t.v + dv) / float(size) - 1.0f;
+            corners[k] = Imath::V3d(CubeMapLayout::faceDirection(t.face, s, v)).normalized();
+            cosHalf = std::min(cosHalf, centre.dot(corners[k]));
         }
-        Imath::V3d vector(0.0);
-        for (std::uint32_t a = 0; a < split; ++a)
-            for (std::uint32_t b = 0; b < split; ++b) {
-                const std::uint32_t f = fine.index({t.face, t.u * split + b, t.v * split + a});
-                subDirections_.emplace_back(fine.direction(f));
-                subSolidAngles_.push_back(fine.solidAngle(f));
-                vector += subDirections_.back() * subSolidAngles_.back();
-            }
+        Imath::V3d vector = vectorSolidAngle(corners);
+        if (vector.dot(centre) < 0.0) {  // the face's (s, t) are mirrored: wind the other way
+            std::reverse(corners.begin(), corners.end());
+            vector = -vector;
+        }
+        corners_.push_back(corners);
         centres_.push_back(centre);
         vectorSolidAngles_.push_back(vector);
         sinHalfAngles_.push_back(std::sqrt(std::max(0.0, 1.0 - cosHalf * cosHalf)));
@@ -36,10 +48,20 @@ double CubeMapCosineIntegral::weight(std::uint32_t texel, const Imath::V3d& n) c
     const double c = n.dot(centres_[texel]);
     if (c >= sinHalfAngles_[texel]) return std::max(0.0, n.dot(vectorSolidAngles_[texel]));
     if (c <= -sinHalfAngles_[texel]) return 0.0;
-    const std::size_t count = subSolidAngles_.size() / centres_.size(), first = texel * count;
-    double sum = 0.0;
-    for (std::size_t k = first; k < first + count; ++k) sum += std::max(0.0, n.dot(subDirections_[k])) * subSolidAngles_[k];
-    return sum;
+    // Sutherland-Hodgman against n.w >= 0; the crossing of an edge with the plane, scaled
+    // onto the sphere, lies on both great circles.
+    const std::array<Imath::V3d, 4>& corners = corners_[texel];
+    Imath::V3d clipped[8];
+    std::size_t count = 0;
+    for (std::size_t k = 0; k < 4; ++k) {
+        const Imath::V3d& a = corners[k];
+        const Imath::V3d& b = corners[(k + 1) % 4];
+        const double da = n.dot(a), db = n.dot(b);
+        if (da >= 0.0) clipped[count++] = a;
+        if ((da >= 0.0) != (db >= 0.0)) clipped[count++] = (a * db - b * da).normalized() * (db > da ? 1.0 : -1.0);
+    }
+    if (count < 3) return 0.0;
+    return std::max(0.0, n.dot(vectorSolidAngle({clipped, count})));
 }
 
 }  // namespace opal

@@ -85,9 +85,11 @@ std::vector<Imath::V3f> ShadowFieldLookup::blend(std::span<const MapWeight> maps
                 coefficients[3 * std::size_t(field_.indices[k]) + c] += float(m.weight * field_.values[3 * k + c]);
     }
     haarInverseCharts<float>(coefficients, mapLayout_.charts(), 3);
+    // Radiance is never negative: what the truncated Haar series rings below 0 is 0.
     std::vector<Imath::V3f> radiance(mapLayout_.texels());
     for (std::size_t i = 0; i < radiance.size(); ++i)
-        radiance[i] = {coefficients[3 * i], coefficients[3 * i + 1], coefficients[3 * i + 2]};
+        radiance[i] = {std::max(0.0f, coefficients[3 * i]), std::max(0.0f, coefficients[3 * i + 1]),
+                       std::max(0.0f, coefficients[3 * i + 2])};
     return radiance;
 }
 

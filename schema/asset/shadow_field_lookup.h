@@ -14,7 +14,8 @@
 //     radius's directional intensity I(w) = r_last^2 * sum_texels L Omega of the outer
 //     shell's interpolated map at w; E = I(w) max(0, -n.w) / r^2.
 // Interpolation is linear in the maps, so it is done on their Haar coefficients, then one
-// inverse transform gives the map. The lookup keeps a reference to the field.
+// inverse transform gives the map; texels the truncated Haar series rings below zero are
+// clamped to 0 (radiance is never negative). The lookup keeps a reference to the field.
 #pragma once
 
 #include "schema/asset/cube_map.h"
