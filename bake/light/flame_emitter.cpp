@@ -63,7 +63,7 @@ Emitter flameEmitter(const FlameShape& s) {
     EmissionProfile emission = [table, height, luminance](const EmitterHit& hit) {
         const float mu = std::min(1.0f, std::abs(hit.direction.dot(hit.normal)));
         const float t = std::clamp(hit.point.y / height, 0.0f, 1.0f);
-        return table->at(mu * mu * (1.0f - t * t)) * (luminance * (0.25f + 0.75f * mu));
+        return table->at(mu * (1.0f - t * t)) * (luminance * (0.25f + 0.75f * mu));
     };
     Emitter e{"flame", describe(s), {}};
     e.parts.push_back({"flame", teardrop(s), std::move(emission)});

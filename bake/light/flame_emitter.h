@@ -4,10 +4,11 @@
 // widest (R) a quarter of the way up. Its emission is procedural: a ray meeting the
 // surface at |cos| mu between its direction and the normal (1 at the middle of the flame
 // as seen, 0 at its silhouette) at height fraction t sees radiance
-//   L = luminance (0.25 + 0.75 mu) rgb(T),  T = T_rim + (T_core - T_rim) mu^2 (1 - t^2),
+//   L = luminance (0.25 + 0.75 mu) rgb(T),  T = T_rim + (T_core - T_rim) mu (1 - t^2),
 // with rgb(T) the unit-luminance linear Rec.709 colour of a black body at T
 // (blackbody.h): a hotter, whiter, brighter core and an orange, dimmer rim and tip.
-// Defaults: T_core 2400 K (yellow-white), T_rim 1500 K (orange), luminance 1.
+// Defaults: T_core 3000 K (yellow-white), T_rim 1700 K (orange), luminance 1: seen
+// whole, about 2400 K, a little whiter than a real candle's 1850 K.
 #pragma once
 
 #include "bake/light/emitter.h"
@@ -17,8 +18,8 @@ namespace opal {
 struct FlameShape {
     double height = 20.0;  // mm, base to tip
     double radius = 4.0;   // mm, widest
-    double coreKelvin = 2400.0;
-    double rimKelvin = 1500.0;
+    double coreKelvin = 3000.0;
+    double rimKelvin = 1700.0;
     double luminance = 1.0;
 };
 
