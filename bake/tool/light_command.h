@@ -15,8 +15,11 @@ namespace opal {
 
 class LightCommand {
 public:
-    // Adds the `light` subcommand and its options to `app`.
+    // Adds the `light` subcommand and its options to `app`, which keeps pointers to this
+    // object's members: it must outlive the parse and stay where it is.
     explicit LightCommand(CLI::App& app);
+    LightCommand(const LightCommand&) = delete;
+    LightCommand& operator=(const LightCommand&) = delete;
 
     bool chosen() const { return command_->parsed(); }
     // Runs the bake; returns the process exit code.

@@ -48,7 +48,7 @@ int main(int argc, char** argv) {
     // Required unless the `light` subcommand is given (checked after parsing).
     app.add_option("input", options.input, "mesh file (.obj .ply .gltf .glb .stl .usda) or builtin:candle");
     app.add_option("-o,--output", outStem, "output stem: writes STEM.usda and its sidecar STEM.<bake id>.opal");
-    const opal::LightCommand light(app);
+    opal::LightCommand light(app);  // not const: parsing writes its options
     app.require_subcommand(0, 1);
     app.add_option("--scheme", options.scheme,
                    "subdivision scheme; auto: a .usda's subdivisionScheme, else loop for all-triangle meshes, "
