@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <csignal>
 #include <fstream>
 
 #ifndef OPAL_BAKE_EXE
@@ -23,9 +24,9 @@ using test::ScratchDir;
 
 const std::vector<std::string> kSmall = {"--shells", "3", "--directions", "2", "--map-size", "8", "--rays", "2"};
 
-test::RunResult bakeLight(std::vector<std::string> args) {
+test::RunResult bakeLight(std::vector<std::string> args, const std::vector<std::string>& environment = {}) {
     args.insert(args.begin(), {OPAL_BAKE_EXE, "light"});
-    test::RunResult r = test::run(args, 120s);
+    test::RunResult r = test::run(args, 120s, environment);
     EXPECT_FALSE(r.timedOut) << test::joined(args) << "\nstderr:\n" << r.err;
     return r;
 }
@@ -117,6 +118,39 @@ TEST(OpalBakeLightCli, ARebakeReplacesTheSidecar) {
     const std::string second = fieldNamedBy(dir / "s.usda");
     EXPECT_NE(first, second);
     EXPECT_EQ(dir.list(), (std::vector<std::string>{second, "s.usda"}));
+}
+
+// A bake killed between writing its sidecar and committing its layer leaves the previous
+// light intact (and a stray sidecar or temporary file that the next bake removes).
+TEST(OpalBakeLightCli, AKilledBakeLeavesThePreviousLight) {
+    const ScratchDir dir;
+    std::vector<std::string> args = {"sphere:radius=1", "-o", (dir / "s").string(), "--quiet"};
+    args.insert(args.end(), kSmall.begin(), kSmall.end());
+    ASSERT_EQ(bakeLight(args).exitCode, 0);
+    const std::string first = fieldNamedBy(dir / "s.usda");
+    const std::string layer = test::readBytes(dir / "s.usda");
+    args[0] = "sphere:radius=2";
+    for (const char* point : {"opal:written", "bake:cleaned", "usda:written"}) {
+        const test::RunResult killed = bakeLight(args, {std::string("OPAL_CRASH_AT=") + point});
+        EXPECT_EQ(killed.termSignal, SIGKILL) << point << "\n" << killed.err;
+        EXPECT_EQ(test::readBytes(dir / "s.usda"), layer) << point;
+        EXPECT_NO_THROW(readShadowFieldFile(dir / first)) << point;
+    }
+    ASSERT_EQ(bakeLight(args).exitCode, 0);
+    const std::string second = fieldNamedBy(dir / "s.usda");
+    EXPECT_NE(second, first);
+    EXPECT_EQ(dir.list(), (std::vector<std::string>{second, "s.usda"}));
+}
+
+TEST(OpalBakeLightCli, InterruptedBakeWritesNothing) {
+    const ScratchDir dir;
+    test::ChildProcess child({OPAL_BAKE_EXE, "light", "sphere:radius=5", "-o", (dir / "s").string()});
+    ASSERT_TRUE(child.waitForStderr("opal-bake: light field", 60s)) << child.err();
+    child.signal(SIGINT);
+    ASSERT_TRUE(child.wait(60s)) << "no exit within 60 s of the signal";
+    EXPECT_EQ(child.exitCode(), 130) << child.err();
+    EXPECT_NE(child.err().find("interrupted; nothing was written"), std::string::npos) << child.err();
+    EXPECT_TRUE(dir.list().empty());
 }
 
 }  // namespace
