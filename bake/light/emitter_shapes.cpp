@@ -14,8 +14,8 @@
 namespace opal {
 namespace {
 
-constexpr int kSegments = 256;  // around +Y
-constexpr int kRings = 128;     // pole to pole of the sphere
+constexpr int kSegments = 128;  // around +Y
+constexpr int kRings = 64;      // pole to pole of the sphere
 
 std::string rgbText(const Imath::V3f& c) {
     std::ostringstream text;
