@@ -53,7 +53,7 @@ Imath::V3f CubeMapLayout::direction(std::uint32_t index) const {
     return faceDirection(t.face, float(faceCoordinate(t.u, size_)), float(faceCoordinate(t.v, size_)));
 }
 
-std::uint32_t CubeMapLayout::lookup(const Imath::V3f& d) const {
+CubeFacePoint CubeMapLayout::facePoint(const Imath::V3f& d) {
     const float ax = std::fabs(d.x), ay = std::fabs(d.y), az = std::fabs(d.z);
     std::uint32_t face;
     float sc, tc, ma;
@@ -73,12 +73,18 @@ std::uint32_t CubeMapLayout::lookup(const Imath::V3f& d) const {
         tc = -d.y;
         ma = az;
     }
-    if (!(ma > 0.0f)) return 0;  // zero or NaN direction: a defined texel, never out of range
+    if (!(ma > 0.0f)) return {};  // zero or NaN direction: a defined point, never out of range
+    const auto coordinate = [&](float c) { return std::isfinite(c / ma) ? std::clamp(c / ma, -1.0f, 1.0f) : 0.0f; };
+    return {face, coordinate(sc), coordinate(tc)};
+}
+
+std::uint32_t CubeMapLayout::lookup(const Imath::V3f& d) const {
+    const CubeFacePoint p = facePoint(d);
     const auto toTexel = [&](float c) {
-        const float x = (c / ma + 1.0f) * 0.5f * float(size_);
+        const float x = (c + 1.0f) * 0.5f * float(size_);
         return std::uint32_t(std::clamp(x, 0.0f, float(size_) - 1.0f));
     };
-    return index({face, toTexel(sc), toTexel(tc)});
+    return index({p.face, toTexel(p.s), toTexel(p.t)});
 }
 
 double CubeMapLayout::solidAngle(std::uint32_t index) const {

@@ -18,6 +18,13 @@ struct CubeMapTexel {
     std::uint32_t face = 0, u = 0, v = 0;
 };
 
+// Where a direction meets the cube: its face and face coordinates (s, t) in [-1, 1]^2,
+// the inverse of CubeMapLayout::faceDirection. A zero or NaN direction gives face 0, (0, 0).
+struct CubeFacePoint {
+    std::uint32_t face = 0;
+    float s = 0.0f, t = 0.0f;
+};
+
 class CubeMapLayout {
 public:
     static constexpr std::uint32_t kMaxFaceSize = 1024;
@@ -34,6 +41,7 @@ public:
     // [-1, 1]^2 on a face.
     Imath::V3f direction(std::uint32_t index) const;
     static Imath::V3f faceDirection(std::uint32_t face, float s, float t);
+    static CubeFacePoint facePoint(const Imath::V3f& direction);
     // The texel a direction falls in.
     std::uint32_t lookup(const Imath::V3f& direction) const;
     // The solid angle a texel subtends (steradians); they sum to 4 pi.
