@@ -222,7 +222,7 @@ std::size_t bytesOf(const std::vector<T>& v) {
 
 std::size_t RelightEngine::memoryBytes() const {
     return product_.memoryBytes() + bytesOf(moments_.values) + bytesOf(haar_) + bytesOf(products_) +
-           bytesOf(weighted_) + bytesOf(fresnel_) + bytesOf(profile_) + bytesOf(radiance_) + bytesOf(irradiance_) +
+           bytesOf(weighted_) + bytesOf(fresnel_) + bytesOf(profile_) + bytesOf(self_) + bytesOf(radiance_) + bytesOf(irradiance_) +
            bytesOf(*vertexRadiance_) + (spareVertexRadiance_ ? bytesOf(*spareVertexRadiance_) : 0) + bytesOf(padded_);
 }
 
