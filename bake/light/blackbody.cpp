@@ -1,8 +1,9 @@
 #include "bake/light/blackbody.h"
 
+#include "bake/light/acescg_from_xyz.h"
+
 #include "schema/error.h"
 
-#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -48,13 +49,9 @@ Imath::V2d blackbodyChromaticity(double kelvin) {
     return {xyz.x / sum, xyz.y / sum};
 }
 
-Imath::V3d blackbodyRec709(double kelvin) {
-    const Imath::V3d c = blackbodyXyz(kelvin);
-    Imath::V3d rgb(3.2404542 * c.x - 1.5371385 * c.y - 0.4985314 * c.z,
-                   -0.9692660 * c.x + 1.8760108 * c.y + 0.0415560 * c.z,
-                   0.0556434 * c.x - 0.2040259 * c.y + 1.0572252 * c.z);
-    for (int i = 0; i < 3; ++i) rgb[i] = std::max(0.0, rgb[i]);
-    return rgb / (0.2126 * rgb.x + 0.7152 * rgb.y + 0.0722 * rgb.z);
+Imath::V3d blackbodyAcescg(double kelvin) {
+    const Imath::V3d rgb = transform(kXyzD65ToAcescg, blackbodyXyz(kelvin));
+    return rgb / rgb.dot(kAcescgLuminance);
 }
 
 }  // namespace opal

@@ -35,7 +35,7 @@ struct TemperatureTable {
 
     TemperatureTable(double rimKelvin, double coreKelvin) : rim(rimKelvin), core(coreKelvin) {
         for (int i = 0; i <= kTemperatureSteps; ++i)
-            rgb.emplace_back(blackbodyRec709(rim + (core - rim) * i / kTemperatureSteps));
+            rgb.emplace_back(blackbodyAcescg(rim + (core - rim) * i / kTemperatureSteps));
     }
     // f in [0, 1]: from rim to core.
     Imath::V3f at(float f) const {

@@ -5,7 +5,7 @@
 // surface at |cos| mu between its direction and the normal (1 at the middle of the flame
 // as seen, 0 at its silhouette) at height fraction t sees radiance
 //   L = luminance (0.25 + 0.75 mu) rgb(T),  T = T_rim + (T_core - T_rim) mu (1 - t^2),
-// with rgb(T) the unit-luminance linear Rec.709 colour of a black body at T
+// with rgb(T) the unit-luminance ACEScg (working space) colour of a black body at T
 // (blackbody.h): a hotter, whiter, brighter core and an orange, dimmer rim and tip.
 // Defaults: T_core 3000 K (yellow-white), T_rim 1700 K (orange), luminance 1: seen
 // whole, about 2400 K, a little whiter than a real candle's 1850 K.

@@ -1,11 +1,14 @@
 // The flame's colour: black-body chromaticities against the CIE Planckian locus, and the
 // flame's core hotter and whiter than its rim.
+#include "bake/light/acescg_from_xyz.h"
 #include "bake/light/blackbody.h"
 #include "bake/light/emitter_scene.h"
 #include "bake/light/flame_emitter.h"
 #include "schema/error.h"
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
 
 namespace opal {
 namespace {
@@ -24,20 +27,29 @@ TEST(Blackbody, ChromaticityFollowsThePlanckianLocus) {
     }
 }
 
-TEST(Blackbody, Rec709HasUnitLuminanceAndWarmsAsItCools) {
+TEST(Blackbody, AcescgHasUnitLuminanceAndWarmsAsItCools) {
     Imath::V3d previous(0.0);
     for (double k : {1200.0, 1500.0, 2000.0, 3000.0, 6500.0}) {
-        const Imath::V3d c = blackbodyRec709(k);
-        EXPECT_NEAR(0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z, 1.0, 1e-12) << k;
-        EXPECT_GE(c.z, 0.0) << k;
+        const Imath::V3d c = blackbodyAcescg(k);
+        EXPECT_NEAR(c.dot(kAcescgLuminance), 1.0, 1e-12) << k;
         if (k > 1200.0) {
             EXPECT_LT(c.x / c.y, previous.x / previous.y) << k;
         }
         previous = c;
     }
-    const Imath::V3d white = blackbodyRec709(6500.0);
-    EXPECT_LT(std::max({white.x, white.y, white.z}) / std::min({white.x, white.y, white.z}), 1.15);
-    EXPECT_THROW(blackbodyRec709(100.0), Error);
+    // The D65 white (about 6500 K) is neutral in ACEScg after the Bradford adaptation.
+    const Imath::V3d white = blackbodyAcescg(6504.0);
+    EXPECT_LT(std::max({white.x, white.y, white.z}) / std::min({white.x, white.y, white.z}), 1.05);
+    EXPECT_THROW(blackbodyAcescg(100.0), Error);
+}
+
+// AP1 holds the Planckian locus: every channel positive, with nothing clamped, from 500 K
+// (Rec.709 would need its blue clamped below about 1600 K).
+TEST(Blackbody, AcescgHoldsThePlanckianLocusUnclamped) {
+    for (double k = 500.0; k <= 40000.0; k *= 1.05) {
+        const Imath::V3d c = blackbodyAcescg(k);
+        for (int i = 0; i < 3; ++i) EXPECT_GT(c[i], 0.0) << k << " K channel " << i;
+    }
 }
 
 TEST(FlameEmitter, CoreIsWhiterAndBrighterThanRim) {
@@ -48,12 +60,13 @@ TEST(FlameEmitter, CoreIsWhiterAndBrighterThanRim) {
     const Imath::V3f core = emission({point, -normal, normal});
     const Imath::V3f rim = emission({point, Imath::V3f(-0.1f, 0.0f, 0.995f).normalized(), normal});
     EXPECT_GT(core.y, 2.0f * rim.y);                 // brighter
-    EXPECT_GT(core.z / core.x, 2.0f * rim.z / rim.x);  // whiter: more blue per red
+    EXPECT_GT(core.z / core.x, 2.0f * rim.z / rim.x);  // whiter: more blue per red,
+    EXPECT_LT(core.x / core.y, 0.8f * rim.x / rim.y);  // and less red per green
     EXPECT_GT(rim.x, rim.y);                         // the rim is orange: red over green over blue
     EXPECT_GT(rim.y, rim.z);
     // The core's colour is the core temperature's (mu = 1 at the base).
     const Imath::V3f base = emission({Imath::V3f(3.0f, 0.0f, 0.0f), -normal, normal});
-    const Imath::V3d expected = blackbodyRec709(FlameShape{}.coreKelvin);
+    const Imath::V3d expected = blackbodyAcescg(FlameShape{}.coreKelvin);
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(base[c], expected[c], 2e-3 * expected[c] + 1e-4) << c;
 }
 
