@@ -11,15 +11,14 @@
 // Y uses the working space's luminance weights (ACEScg's by default).
 #pragma once
 
+#include "schema/scatter/rgb.h"  // kAcescgLuminance
+
 #include <Imath/ImathVec.h>
 
 #include <cstdint>
 #include <span>
 
 namespace opal::bench {
-
-// ACEScg (AP1) luminance: the middle row of its RGB to XYZ matrix.
-inline const Imath::V3d kAcescgLuminance{0.2722287168, 0.6740817658, 0.0536895174};
 
 struct Percentiles {
     double median = 0.0, p95 = 0.0;

@@ -9,6 +9,8 @@
 // inverse of OCIO's builtin "UTILITY - ACES-AP1_to_CIE-XYZ-D65_BFD".
 #pragma once
 
+#include "schema/scatter/rgb.h"  // kAcescgLuminance
+
 #include <Imath/ImathVec.h>
 
 #include <array>
@@ -33,8 +35,6 @@ inline constexpr ColorMatrix kBradfordD65ToAcesWhite = {{{1.0130349146, 0.006105
                                                          {0.0076982301, 0.9981633521, -0.0050320385},
                                                          {-0.0028413174, 0.0046851567, 0.9245061375}}};
 
-// Luminance of an ACEScg colour: the Y row of AP1's RGB -> XYZ (S-2014-004).
-inline constexpr Imath::V3d kAcescgLuminance{0.2722287168, 0.6740817658, 0.0536895174};
 
 constexpr ColorMatrix product(const ColorMatrix& a, const ColorMatrix& b) {
     ColorMatrix m{};
