@@ -19,6 +19,7 @@
 
 namespace opal {
 namespace {
+using test::errorOf;
 
 const FileKind kKind{"TEST", {1, 0}};
 
@@ -122,15 +123,6 @@ std::vector<std::byte> varintStream(std::uint64_t declared, std::initializer_lis
     for (int i = 0; i < 8; ++i) out.push_back(std::byte((declared >> (8 * i)) & 0xff));
     for (unsigned b : bytes) out.push_back(std::byte(b));
     return out;
-}
-
-std::string errorOf(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const Error& e) {
-        return e.what();
-    }
-    return "NO ERROR";
 }
 
 TEST(Varints, RoundTripSignedValuesOfEveryLength) {

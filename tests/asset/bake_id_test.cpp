@@ -15,21 +15,10 @@
 
 namespace opal {
 namespace {
+using test::expectContains;
+using test::errorOf;
 
 const std::filesystem::path kLegacy = std::filesystem::path(OPAL_SOURCE_DIR) / "tests/asset/legacy/candle.usda";
-
-std::string errorOf(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const Error& e) {
-        return e.what();
-    }
-    return "(no error)";
-}
-
-void expectContains(const std::string& text, std::initializer_list<std::string> parts) {
-    for (const std::string& part : parts) EXPECT_NE(text.find(part), std::string::npos) << "'" << part << "' in: " << text;
-}
 
 std::string textOf(const std::filesystem::path& file) {
     std::ifstream in(file);

@@ -12,22 +12,11 @@
 
 namespace opal {
 namespace {
+using test::expectContains;
+using test::errorOf;
 
 using test::TempDir;
 using namespace shadow_field_chunk;
-
-std::string errorOf(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const Error& e) {
-        return e.what();
-    }
-    return "(no error)";
-}
-
-void expectContains(const std::string& text, std::initializer_list<const char*> parts) {
-    for (const char* part : parts) EXPECT_NE(text.find(part), std::string::npos) << "'" << part << "' not in: " << text;
-}
 
 std::vector<std::uint32_t> bits(const std::vector<float>& v) {
     std::vector<std::uint32_t> out;

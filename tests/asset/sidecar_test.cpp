@@ -18,6 +18,8 @@
 
 namespace opal {
 namespace {
+using test::expectContains;
+using test::errorOf;
 
 using test::TempDir;
 
@@ -58,22 +60,6 @@ void expectSameSidecarParts(const TranslucentAsset& a, const TranslucentAsset& b
     EXPECT_EQ(a.environment.offsets, b.environment.offsets);
     EXPECT_EQ(a.environment.indices, b.environment.indices);
     EXPECT_EQ(bits(a.environment.values), bits(b.environment.values));
-}
-
-// The message of the opal::Error `f` throws; fails the test on no or another exception.
-std::string errorOf(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const Error& e) {
-        return e.what();
-    } catch (const std::exception& e) {
-        return std::string("NOT AN opal::Error: ") + e.what();
-    }
-    return "NO ERROR";
-}
-
-void expectContains(const std::string& message, std::initializer_list<std::string> parts) {
-    for (const std::string& p : parts) EXPECT_NE(message.find(p), std::string::npos) << message << "\n  lacks: " << p;
 }
 
 // A sidecar's chunks with their raw bytes, to be edited and written back through the

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "schema/asset/xxhash64.h"
+#include "schema/error.h"
 
 #include <gtest/gtest.h>
 
@@ -12,6 +13,8 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <initializer_list>
 #include <iterator>
 #include <string>
 #include <vector>
@@ -19,6 +22,24 @@
 #include <unistd.h>
 
 namespace opal::test {
+
+// The message of the opal::Error `f` throws; "NO ERROR" or "NOT AN opal::Error: ..."
+// otherwise, which no expected message contains.
+inline std::string errorOf(const std::function<void()>& f) {
+    try {
+        f();
+    } catch (const Error& e) {
+        return e.what();
+    } catch (const std::exception& e) {
+        return std::string("NOT AN opal::Error: ") + e.what();
+    }
+    return "NO ERROR";
+}
+
+inline void expectContains(const std::string& text, std::initializer_list<std::string> parts) {
+    for (const std::string& part : parts)
+        EXPECT_NE(text.find(part), std::string::npos) << "'" << part << "' not in: " << text;
+}
 
 class TempDir {
 public:
