@@ -46,7 +46,7 @@ BoundMaterial resolveMaterial(const TranslucentMesh& mesh, const MaterialPrims& 
 
 const std::vector<hd::Token>& lightTypes() {
     static const std::vector<hd::Token> types = {hd::PrimType::SphereLight, hd::PrimType::DistantLight,
-                                                 hd::PrimType::DomeLight};
+                                                 hd::PrimType::DomeLight, hd::PrimType::ShadowFieldLight};
     return types;
 }
 
@@ -56,11 +56,15 @@ LightSources collectLights(const hd::RenderIndex& index, Frame& frame) {
     LightSources lights;
     for (const OpalLight* light : collectLightPrims(index)) {
         if (light->version() == 0) continue;
-        LightSource source{light->version(), nullptr, nullptr};
+        LightSource source{light->version(), nullptr, nullptr, nullptr};
         if (light->isDome()) {
             source.environment = light->environment();
             frame.domes.push_back(
                 {light->domeMap(), light->domeFromWorld(), light->domeScale(), light->desc().visibleToCamera});
+        } else if (light->field()) {
+            source.field = light->field();
+            frame.lights.push_back(light->field()->highlight());
+            frame.emitters.push_back(light->field());
         } else {
             source.analytic = &*light->analytic();
             frame.lights.push_back(*light->analytic());

@@ -12,7 +12,9 @@ hd::LightKind kindOf(const hd::Token& type, const hd::SdfPath& id) {
     if (type == hd::PrimType::SphereLight) return hd::LightKind::Sphere;
     if (type == hd::PrimType::DistantLight) return hd::LightKind::Distant;
     if (type == hd::PrimType::DomeLight) return hd::LightKind::Dome;
-    throw Error("light '" + id + "': Opal's lights are sphereLight, distantLight and domeLight, not '" + type + "'");
+    if (type == hd::PrimType::ShadowFieldLight) return hd::LightKind::ShadowField;
+    throw Error("light '" + id + "': Opal's lights are sphereLight, distantLight, domeLight and " +
+                hd::PrimType::ShadowFieldLight + ", not '" + type + "'");
 }
 
 }  // namespace
@@ -27,8 +29,9 @@ const char* lightKindName(hd::LightKind kind) {
     return "unknown";
 }
 
-OpalLight::OpalLight(const hd::SdfPath& id, const hd::Token& type, DomeTextureCache& textures, PrimVersions& versions)
-    : hd::Sprim(id), kind_(kindOf(type, id)), textures_(textures), versions_(versions) {}
+OpalLight::OpalLight(const hd::SdfPath& id, const hd::Token& type, DomeTextureCache& textures,
+                     ShadowFieldCache& fields, PrimVersions& versions)
+    : hd::Sprim(id), kind_(kindOf(type, id)), textures_(textures), fields_(fields), versions_(versions) {}
 
 void OpalLight::sync(const hd::SceneDelegate& scene, hd::DirtyBits* dirtyBits) {
     if (*dirtyBits != hd::Dirty::Clean) {
@@ -37,15 +40,15 @@ void OpalLight::sync(const hd::SceneDelegate& scene, hd::DirtyBits* dirtyBits) {
             throw Error("light '" + id() + "': a " + lightKindName(kind_) + " light prim was described as a " +
                         lightKindName(desc.kind) + " light");
         std::shared_ptr<const LatLongMap> map;
-        if (kind_ == hd::LightKind::Dome) {
-            try {
-                // Cached by file and color space: editing intensity or rotation reads nothing.
-                map = textures_.get(desc.textureFile, desc.textureColorSpace);
-            } catch (const Error& e) {
-                throw Error("light '" + id() + "': " + e.what());
-            }
+        std::shared_ptr<const LoadedShadowField> field;
+        try {
+            // Cached by file (and color space): editing intensity or a transform reads nothing.
+            if (kind_ == hd::LightKind::Dome) map = textures_.get(desc.textureFile, desc.textureColorSpace);
+            if (kind_ == hd::LightKind::ShadowField) field = fields_.get(desc.shadowField);
+        } catch (const Error& e) {
+            throw Error("light '" + id() + "': " + e.what());
         }
-        build(desc, std::move(map));
+        build(desc, std::move(map), std::move(field));
     }
     *dirtyBits = hd::Dirty::Clean;
 }
@@ -58,12 +61,15 @@ void OpalLight::reloadTexture() {
     } catch (const Error& e) {
         throw Error("light '" + id() + "': " + e.what());
     }
-    build(desc_, std::move(map));
+    build(desc_, std::move(map), nullptr);
 }
 
-void OpalLight::build(const hd::LightDesc& desc, std::shared_ptr<const LatLongMap> map) {
+void OpalLight::build(const hd::LightDesc& desc, std::shared_ptr<const LatLongMap> map,
+                      std::shared_ptr<const LoadedShadowField> field) {
     try {
-        if (kind_ == hd::LightKind::Dome) {
+        if (kind_ == hd::LightKind::ShadowField) {
+            field_ = std::make_shared<const ShadowFieldLight>(std::move(field), desc);
+        } else if (kind_ == hd::LightKind::Dome) {
             auto environment = std::make_shared<const EnvironmentLight>(EnvironmentLight::fromDesc(map, desc));
             domeFromWorld_ = rotationOf(desc.transform, "transform").transposed();
             domeScale_ = environment->scale();

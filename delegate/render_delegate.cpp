@@ -53,7 +53,7 @@ std::unique_ptr<hd::Sprim> OpalRenderDelegate::createSprim(const hd::Token& type
     if (type == hd::PrimType::Camera) return std::make_unique<OpalCamera>(id);
     if (type == hd::PrimType::Material) return std::make_unique<OpalMaterial>(id, versions_);
     for (const hd::Token& light : lightTypes())
-        if (type == light) return std::make_unique<OpalLight>(id, type, textures_, versions_);
+        if (type == light) return std::make_unique<OpalLight>(id, type, textures_, fields_, versions_);
     return nullptr;
 }
 

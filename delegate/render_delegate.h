@@ -18,6 +18,7 @@
 #include "delegate/dome_texture.h"
 #include "delegate/hd/render_delegate.h"
 #include "delegate/prim_version.h"
+#include "delegate/shadow_field_cache.h"
 #include "delegate/render_job.h"
 #include "delegate/render_settings.h"
 #include "delegate/render_thread.h"
@@ -107,6 +108,7 @@ private:
     std::uint64_t settingsVersion_ = 0, committedSettingsVersion_ = 0;
     PrimVersions versions_;
     DomeTextureCache textures_;
+    ShadowFieldCache fields_;
     std::string texturesConfig_;
 
     const hd::RenderIndex* index_ = nullptr;

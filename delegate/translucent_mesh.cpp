@@ -73,6 +73,8 @@ void TranslucentMesh::addLight(const hd::SdfPath& light, const LightSource& sour
     try {
         if (source.analytic)
             irradiance_->setLight(light, *source.analytic, rays);
+        else if (source.field)
+            irradiance_->setLight(light, source.field, rays);
         else
             irradiance_->setLight(light, source.environment);
     } catch (const Error& e) {
@@ -110,7 +112,7 @@ void TranslucentMesh::updateIrradiance(const LightSources& lights, const RayScen
     }
     bool changed = false;
     // Lights gone or changed leave first, so that the bulk updates below skip them.
-    std::size_t analyticKept = 0;
+    std::size_t shadowedKept = 0;
     for (auto it = appliedLights_.begin(); it != appliedLights_.end();) {
         const auto light = lights.find(it->first);
         if (light == lights.end() || light->second.version != it->second) {
@@ -118,7 +120,7 @@ void TranslucentMesh::updateIrradiance(const LightSources& lights, const RayScen
             it = appliedLights_.erase(it);
             changed = true;
         } else {
-            if (light->second.analytic) ++analyticKept;
+            if (light->second.shadowed()) ++shadowedKept;
             ++it;
         }
     }
@@ -130,9 +132,9 @@ void TranslucentMesh::updateIrradiance(const LightSources& lights, const RayScen
         }
         stats.lightEvaluations += appliedLights_.size();
         changed = true;
-    } else if (raysRebuilt && analyticKept > 0) {
-        irradiance_->updateShadows(rays);  // occluders moved: analytic lights' shadows
-        stats.lightEvaluations += analyticKept;
+    } else if (raysRebuilt && shadowedKept > 0) {
+        irradiance_->updateShadows(rays);  // occluders moved: the shadowed lights
+        stats.lightEvaluations += shadowedKept;
         changed = true;
     }
     for (const auto& [light, source] : lights)

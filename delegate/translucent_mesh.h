@@ -35,6 +35,8 @@ struct LightSource {
     std::uint64_t version = 0;
     const AnalyticLight* analytic = nullptr;             // sphere and distant lights
     std::shared_ptr<const EnvironmentLight> environment;  // domes
+    std::shared_ptr<const ShadowFieldLight> field;        // shadow-field lights
+    bool shadowed() const { return analytic || field; }   // its E depends on occluders
 };
 using LightSources = std::map<hd::SdfPath, LightSource>;
 

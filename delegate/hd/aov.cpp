@@ -15,18 +15,22 @@ const float NoDepth = std::numeric_limits<float>::infinity();
 
 const std::array<AovDescriptor, kAovCount> Table = {{
     {"color", {"R", "G", "B", "A"}, Float16, Filtered, 0.0f, "",
-     "scene-linear radiance, premultiplied by A: subsurface + specular, or the visible domes behind"},
+     "scene-linear radiance, premultiplied by A: subsurface + specular + emission, or the visible domes "
+     "behind + emission"},
     {"subsurface", {"R", "G", "B"}, Float16, Filtered, 0.0f, "subsurface",
      "radiance scattered out of the surface: F_t(eta, n.w_o) times the relit vertex radiance"},
     {"specular", {"R", "G", "B"}, Float16, Filtered, 0.0f, "specular",
      "radiance of the GGX layer: analytic lights (shadowed) and the domes' reflection"},
+    {"emission", {"R", "G", "B"}, Float16, Filtered, 0.0f, "emission",
+     "radiance of the shadow-field lights' emitters seen in front of the surface (a flame)"},
     {"irradiance", {"R", "G", "B"}, Float16, Filtered, 0.0f, "irradiance",
      "irradiance E at the surface, interpolated from the vertices (W m^-2 per unit radiance)"},
     {"normal", {"X", "Y", "Z"}, Float16, Nearest, 0.0f, "normal", "world-space unit shading normal"},
     {"depth", {"Z"}, Float32, Nearest, NoDepth, "depth",
      "distance along the camera's view axis in scene units; infinity where nothing was hit"},
     {"primId", {"id"}, Float32, Nearest, -1.0f, "primId",
-     "the translucent mesh's number (DELEGATE.md); -1 where nothing was hit"},
+     "the translucent mesh's number, or a shadow-field light's after them (DELEGATE.md); -1 where "
+     "nothing was hit"},
     {"alpha", {"A"}, Float16, Filtered, 0.0f, "", "coverage: the filter-weighted fraction of the pixel covered"},
 }};
 

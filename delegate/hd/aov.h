@@ -41,8 +41,8 @@ struct AovDescriptor {
 };
 
 // The rows, in the order AovId names them.
-enum class AovId { Color, Subsurface, Specular, Irradiance, Normal, Depth, PrimId, Alpha };
-inline constexpr std::size_t kAovCount = 8;
+enum class AovId { Color, Subsurface, Specular, Emission, Irradiance, Normal, Depth, PrimId, Alpha };
+inline constexpr std::size_t kAovCount = 9;
 
 std::span<const AovDescriptor> aovTable();
 const AovDescriptor& aovDescriptor(AovId id);

@@ -13,6 +13,7 @@
 
 #include <Imath/ImathMatrix.h>
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 
@@ -34,6 +35,13 @@ struct MaterialDesc {
 };
 
 enum class LightKind { Sphere, Distant, Dome, ShadowField };
+
+// A shadow-field light's flicker (delegate/relight/light_flicker.h): amplitude 0 is none.
+struct LightFlicker {
+    double amplitude = 0.0;
+    double frequency = 8.0;  // Hz
+    std::uint64_t seed = 0;
+};
 
 // UsdLux semantics: emitted radiance = color * intensity * 2^exposure; with `normalize` a
 // sphere light's power does not depend on its size. A sphere with treatAsPoint is a
@@ -59,8 +67,11 @@ struct LightDesc {
     std::string textureFile;
     std::string textureColorSpace = "Linear Rec.709 (sRGB)";
     bool visibleToCamera = true;
-    // ShadowFieldLight: the baked source radiance field (its own issue).
+    // ShadowFieldLight: the light asset's sidecar (the baked source radiance field), its
+    // flicker, and the scene time (seconds) the flicker is evaluated at.
     std::string shadowField;
+    LightFlicker flicker;
+    double time = 0.0;
 };
 
 // UsdGeomCamera: a perspective camera looking down its -Z axis; focal length and apertures

@@ -43,7 +43,7 @@ constexpr int kBlockPixels = kBlockWidth * kBlockHeight;
 static_assert(kBlockPixels == int(RayScene::kPacketSize));
 
 struct Pixel {
-    Imath::V3f subsurface{0.0f}, specular{0.0f}, irradiance{0.0f}, normal{0.0f}, background{0.0f};
+    Imath::V3f subsurface{0.0f}, specular{0.0f}, emission{0.0f}, irradiance{0.0f}, normal{0.0f}, background{0.0f};
     float depth = std::numeric_limits<float>::infinity();
     float primId = -1.0f;
     float alpha = 0.0f;
@@ -69,19 +69,30 @@ struct FrameContext {
     std::vector<MeshContext> meshes;  // by ray-scene prim number
     std::vector<DomeLookup> domes;    // frame.domes, as the pixel loop looks them up
     std::vector<int> backgroundLevels;  // per dome: its pyramid level for one pixel (-1: not visible)
+    std::vector<EmitterImage> emitters;  // frame.emitters as this camera sees them
     double shadowOffset = 0.0;        // kShadowOffset * the scene's extent
     CameraView::PixelRect scene;      // where primary rays may hit (empty: no meshes)
 };
 
 FrameContext frameContext(const Frame& frame, const CameraView& camera, const RenderOptions& options) {
-    FrameContext context{frame, options, camera, {}, {}, {}, 0.0, {}};
+    FrameContext context{frame, options, camera, {}, {}, {}, {}, 0.0, {}};
     for (const DomeView& dome : frame.domes) {
         context.domes.emplace_back(dome.map, dome.domeFromWorld, Imath::V3f(dome.scale.x, dome.scale.y, dome.scale.z));
         context.backgroundLevels.push_back(dome.visibleToCamera ? context.domes.back().levelFor(camera.pixelAngle()) : -1);
     }
-    if (!frame.rays) return context;
+    Imath::Box3f bounds;  // what primary rays can meet: the meshes and the emitters
+    for (const auto& emitter : frame.emitters) {
+        context.emitters.push_back(emitter->cameraImage(camera.position()));
+        const Imath::V3f centre(emitter->centre()), reach(float(emitter->emitterRadius()));
+        bounds.extendBy(Imath::Box3f(centre - reach, centre + reach));
+    }
+    if (!frame.rays) {
+        if (!bounds.isEmpty()) context.scene = camera.pixelBounds(bounds);
+        return context;
+    }
     context.shadowOffset = kShadowOffset * frame.rays->extent();
-    context.scene = camera.pixelBounds(frame.rays->bounds());
+    bounds.extendBy(frame.rays->bounds());
+    context.scene = camera.pixelBounds(bounds);
     for (std::size_t prim = 0; prim < frame.meshes.size(); ++prim) {
         const MeshShading& shading = *frame.meshes[prim];
         MeshContext mesh;
@@ -278,6 +289,34 @@ void prefetchVertices(const FrameContext& context, const Block& block) {
     }
 }
 
+// The emitters each ray passes in front of whatever it hit: additive emission, and the
+// nearest emitter's depth and primId where one is in front (emitter k is prim
+// meshes.size() + k).
+void shadeEmitters(const FrameContext& context, Block& block) {
+    for (int i = 0; i < block.count; ++i) {
+        const Ray& ray = block.rays[i];
+        const double length = Imath::V3d(ray.direction()).length();
+        if (!(length > 0.0)) continue;
+        const Imath::V3d o(ray.origin()), d = Imath::V3d(ray.direction()) / length;
+        Pixel& pixel = block.pixels[i];
+        const double hitT = block.hits[i] ? double(block.hits[i]->t) : std::numeric_limits<double>::infinity();
+        double nearest = hitT;
+        for (std::size_t k = 0; k < context.emitters.size(); ++k) {
+            double t = 0.0;
+            const Imath::V3f radiance = context.emitters[k].along(o, d, t);
+            const double rayT = t / length;  // in the primary ray's parameter, as hit.t
+            if (radiance.x + radiance.y + radiance.z <= 0.0f || !(rayT < hitT)) continue;
+            pixel.emission += radiance;
+            pixel.alpha = 1.0f;
+            if (rayT < nearest) {
+                nearest = rayT;
+                pixel.depth = float(rayT);
+                pixel.primId = float(context.meshes.size() + k);
+            }
+        }
+    }
+}
+
 void shadeBlock(const FrameContext& context, Block& block) {
     for (int i = 0; i < block.count; ++i) {
         block.rays[i] = context.camera.ray(block.x[i] + block.offset.x, block.y[i] + block.offset.y);
@@ -300,6 +339,7 @@ void shadeBlock(const FrameContext& context, Block& block) {
         specular = specular || block.surfaces[i].mesh;
     }
     background(context, block);
+    if (!context.emitters.empty()) shadeEmitters(context, block);
     if (specular) shadeSpecular(context, block);
 }
 
@@ -313,12 +353,14 @@ void putAov(const Pixel& p, float* out) {
         ((out[c++] = values), ...);
     };
     if constexpr (A == Color) {
-        const Imath::V3f c = p.hit ? p.subsurface + p.specular : p.background;
+        const Imath::V3f c = (p.hit ? p.subsurface + p.specular : p.background) + p.emission;
         put(c.x, c.y, c.z, p.alpha);
     } else if constexpr (A == Subsurface) {
         put(p.subsurface.x, p.subsurface.y, p.subsurface.z);
     } else if constexpr (A == Specular) {
         put(p.specular.x, p.specular.y, p.specular.z);
+    } else if constexpr (A == Emission) {
+        put(p.emission.x, p.emission.y, p.emission.z);
     } else if constexpr (A == Irradiance) {
         put(p.irradiance.x, p.irradiance.y, p.irradiance.z);
     } else if constexpr (A == Normal) {
@@ -344,6 +386,7 @@ void putRow(hd::AovId aov, const Pixel* pixels, std::size_t n, std::size_t c, fl
         case Color: return putRow<Color>(pixels, n, c, out);
         case Subsurface: return putRow<Subsurface>(pixels, n, c, out);
         case Specular: return putRow<Specular>(pixels, n, c, out);
+        case Emission: return putRow<Emission>(pixels, n, c, out);
         case Irradiance: return putRow<Irradiance>(pixels, n, c, out);
         case Normal: return putRow<Normal>(pixels, n, c, out);
         case Depth: return putRow<Depth>(pixels, n, c, out);

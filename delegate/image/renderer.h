@@ -3,8 +3,11 @@
 //   subsurface = F_t(eta, n.w_o) sum_j b_j L(v_j)      barycentric over the hit triangle's
 //                                                      per-vertex radiance L (no F_t(w_o))
 //   specular   = GGX of every analytic light (shadow rays) + the dome reflection (specular.h)
-//   color      = subsurface + specular, alpha 1
-// and where nothing is hit, the visible domes (or nothing: opal:transparentBackground).
+//   emission   = the shadow-field lights' emitters the ray passes in front of the hit (or
+//                with no hit), drawn from each one's camera map (shadow_field_light.h):
+//                additive, as a flame is; depth and primId are then the emitter's
+//   color      = subsurface + specular + emission, alpha 1
+// and where nothing is hit, the visible domes + emission (or nothing: opal:transparentBackground).
 // Pixels converge over passes of sub-pixel samples (renderPass below). The renderer reads
 // only a committed Frame: prims may change while it runs.
 #pragma once
@@ -12,6 +15,7 @@
 #include "delegate/relight/analytic_light.h"
 #include "delegate/image/camera_view.h"
 #include "delegate/relight/environment_light.h"
+#include "delegate/relight/shadow_field_light.h"
 #include "delegate/hd/aov.h"
 #include "delegate/hd/render_buffer.h"
 #include "delegate/image/pixel_filter.h"
@@ -54,6 +58,9 @@ struct Frame {
     std::vector<std::shared_ptr<const MeshShading>> meshes;  // by ray-scene prim number
     std::vector<AnalyticLight> lights;
     std::vector<DomeView> domes;
+    // Shadow-field lights whose emitters the camera sees; emitter k has primId
+    // meshes.size() + k.
+    std::vector<std::shared_ptr<const ShadowFieldLight>> emitters;
 };
 
 struct RenderOptions {

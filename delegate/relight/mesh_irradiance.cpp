@@ -43,9 +43,14 @@ MeshIrradiance::MeshIrradiance(std::shared_ptr<const TranslucentAsset> asset, co
 void MeshIrradiance::compute(Contribution& c, const RayScene* scene) {
     c.moments = IrradianceMoments(std::uint32_t(placed_.positions.size()), terms_, basis_);
     c.referenceE.clear();
+    const float offset = scene ? kShadowOffset * scene->extent() : 0.0f;
     if (const auto* light = std::get_if<AnalyticLight>(&c.source)) {
-        const float offset = scene ? kShadowOffset * scene->extent() : 0.0f;
         c.arrivals = lightArrivals(*light, placed_, scene, offset);
+        addMoments(c.arrivals, response_, c.moments);
+        return;
+    }
+    if (const auto* field = std::get_if<std::shared_ptr<const ShadowFieldLight>>(&c.source)) {
+        c.arrivals = (*field)->arrivals(placed_, scene, offset);
         addMoments(c.arrivals, response_, c.moments);
         return;
     }
@@ -84,28 +89,37 @@ void MeshIrradiance::setLight(const hd::SdfPath& id, std::shared_ptr<const Envir
     resum();
 }
 
+void MeshIrradiance::setLight(const hd::SdfPath& id, std::shared_ptr<const ShadowFieldLight> light,
+                              const RayScene& scene) {
+    if (!light) throw Error("irradiance: shadow-field light " + id + " has no field");
+    Contribution c{std::move(light), {}, {}, {}, 0.0};
+    compute(c, &scene);
+    lights_.insert_or_assign(id, std::move(c));
+    resum();
+}
+
 void MeshIrradiance::removeLight(const hd::SdfPath& id) {
     if (lights_.erase(id)) resum();
 }
 
 void MeshIrradiance::updateShadows(const RayScene& scene) {
     for (auto& [id, c] : lights_)
-        if (std::holds_alternative<AnalyticLight>(c.source)) compute(c, &scene);
+        if (!isDome(c)) compute(c, &scene);
     resum();
 }
 
-std::vector<float> MeshIrradiance::analyticIrradiance(double eta) const {
+std::vector<float> MeshIrradiance::arrivalIrradiance(double eta) const {
     std::vector<float> rgb(placed_.positions.size() * 3, 0.0f);
     for (const auto& [id, contribution] : lights_)
-        if (std::holds_alternative<AnalyticLight>(contribution.source)) addExactIrradiance(contribution.arrivals, eta, rgb);
+        if (!isDome(contribution)) addExactIrradiance(contribution.arrivals, eta, rgb);
     return rgb;
 }
 
 std::vector<float> MeshIrradiance::exactIrradiance(double eta) const {
-    std::vector<float> rgb = analyticIrradiance(eta);
+    std::vector<float> rgb = arrivalIrradiance(eta);
     const std::vector<double> c = fresnelMoments(eta, int(terms_), basis_);
     for (const auto& [id, contribution] : lights_) {
-        if (std::holds_alternative<AnalyticLight>(contribution.source)) continue;
+        if (!isDome(contribution)) continue;
         const std::vector<float> dome = contribution.moments.combine(c);
         for (std::size_t j = 0; j < rgb.size(); ++j) rgb[j] += dome[j];
     }
@@ -113,7 +127,7 @@ std::vector<float> MeshIrradiance::exactIrradiance(double eta) const {
 }
 
 std::vector<float> MeshIrradiance::referenceIrradiance(double eta) {
-    std::vector<float> rgb = analyticIrradiance(eta);
+    std::vector<float> rgb = arrivalIrradiance(eta);
     for (auto& [id, contribution] : lights_) {
         const auto* dome = std::get_if<std::shared_ptr<const EnvironmentLight>>(&contribution.source);
         if (!dome) continue;

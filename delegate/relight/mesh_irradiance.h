@@ -1,7 +1,7 @@
 // The irradiance moments of one placed translucent mesh, kept per light so that an edit recomputes
 // only what changed (docs/ARCHITECTURE.md#irradiance): moving or editing a light recomputes that
 // light's E_m alone and re-sums; moving the mesh recomputes every light (they all depend on where
-// the samples are); moving an occluder re-shadows the analytic lights only.
+// the samples are); moving an occluder re-shadows the analytic and shadow-field lights only.
 //
 // The moment count is the asset's environment transfer's fresnelTerms (the baked dome
 // vectors fix it), or 2 when the asset has no environment transfer.
@@ -14,6 +14,7 @@
 #include "delegate/relight/fresnel_response.h"
 #include "delegate/hd/types.h"
 #include "delegate/relight/irradiance.h"
+#include "delegate/relight/shadow_field_light.h"
 
 #include <map>
 #include <memory>
@@ -35,13 +36,15 @@ public:
     // Adds or replaces one light and recomputes only its contribution.
     void setLight(const hd::SdfPath& id, const AnalyticLight& light, const RayScene& scene);
     void setLight(const hd::SdfPath& id, std::shared_ptr<const EnvironmentLight> light);
+    void setLight(const hd::SdfPath& id, std::shared_ptr<const ShadowFieldLight> light, const RayScene& scene);
     void removeLight(const hd::SdfPath& id);
-    // Occluders changed: recompute the analytic lights' shadows.
+    // Occluders changed: recompute the shadowed (analytic and shadow-field) lights.
     void updateShadows(const RayScene& scene);
 
     // sum over lights of E_m(x_i): what RelightEngine::setIrradiance takes.
     const IrradianceMoments& moments() const { return total_; }
-    // E(x_i; eta) with the exact F_t(eta, .) for analytic lights and sum_m c_m(eta) E_m for
+    // E(x_i; eta) with the exact F_t(eta, .) for analytic and shadow-field lights (at each
+    // sample's arrival cosine) and sum_m c_m(eta) E_m for
     // domes (the engine's baked vectors, F_t in moment form): samples x 3, the engine's own
     // E but for the analytic lights' Fresnel fit.
     std::vector<float> exactIrradiance(double eta) const;
@@ -55,17 +58,21 @@ public:
     std::size_t memoryBytes() const;
 
 private:
-    using Source = std::variant<AnalyticLight, std::shared_ptr<const EnvironmentLight>>;
+    using Source = std::variant<AnalyticLight, std::shared_ptr<const EnvironmentLight>,
+                                std::shared_ptr<const ShadowFieldLight>>;
     struct Contribution {
         Source source;
         IrradianceMoments moments;
-        std::vector<LightArrival> arrivals;  // analytic lights: for exactIrradiance
+        std::vector<LightArrival> arrivals;  // analytic and shadow-field lights: for exactIrradiance
         std::vector<float> referenceE;       // domes: the last referenceIrradiance, at referenceEta
         double referenceEta = 0.0;
     };
     void compute(Contribution& contribution, const RayScene* scene);
     void resum();
-    std::vector<float> analyticIrradiance(double eta) const;
+    std::vector<float> arrivalIrradiance(double eta) const;
+    static bool isDome(const Contribution& c) {
+        return std::holds_alternative<std::shared_ptr<const EnvironmentLight>>(c.source);
+    }
 
     std::shared_ptr<const TranslucentAsset> asset_;
     Imath::M44d objectToWorld_;

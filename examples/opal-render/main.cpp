@@ -42,6 +42,8 @@ void defineOptions(CLI::App& app, opal::render::RenderOptions& options, std::str
     app.add_flag("--float", options.floatPixels, "Write 32-bit float color layers (default: half)");
     app.add_option("--camera", options.camera, "Camera prim path (default: the scene's)");
     app.add_option("--delegate", options.delegate, "Renderer plugin type (default: the registry's default)");
+    app.add_option("--time", options.time, "Scene time in seconds for time-varying lights (flicker; default 0)")
+        ->check(CLI::Range(-1.0e9, 1.0e9));
 }
 
 }  // namespace

@@ -62,11 +62,12 @@ RenderDelegateHandle createDelegate(const RendererPluginHandle& plugin, const sc
 
 // Syncs the scene into a render index on `delegate` and renders `buffers` through it;
 // what the delegate warned about on the way goes to `warnings`.
-void renderFrame(hd::RenderDelegate& delegate, scene::Scene scene, const scene::RenderSetup& setup,
+void renderFrame(hd::RenderDelegate& delegate, scene::Scene scene, const scene::RenderSetup& setup, double time,
                  const AovBuffers& buffers, StageTimer& timer, std::ostream& warnings) {
-    const scene::UsdaSceneSource source(std::move(scene));
+    scene::UsdaSceneSource source(std::move(scene));
     hd::RenderIndex index(delegate);
     source.populate(index);
+    source.setTime(time, index);
     try {
         index.sync();
     } catch (const Error& e) {
@@ -99,6 +100,7 @@ ExrMetadata frameMetadata(const RenderOptions& options, const scene::RenderSetup
     metadata.emplace_back("alpha", "premultiplied: R, G, B are radiance times A (OpenEXR convention)");
     metadata.emplace_back("scene", std::filesystem::absolute(options.scene).lexically_normal().string());
     metadata.emplace_back("camera", setup.camera);
+    metadata.emplace_back("time", float(options.time));
     metadata.emplace_back("resolution",
                           std::to_string(setup.resolution.width) + "x" + std::to_string(setup.resolution.height));
     metadata.emplace_back("material", options.material.value_or("scene"));
@@ -131,7 +133,7 @@ std::string renderScene(const RenderOptions& options, std::ostream& warnings) {
     timer.lap("delegate");
 
     const AovBuffers buffers(options.aovs, display.has_value());
-    renderFrame(*delegate, std::move(scene), setup, buffers, timer, warnings);
+    renderFrame(*delegate, std::move(scene), setup, options.time, buffers, timer, warnings);
 
     std::vector<std::string> writeWarnings;
     FrameContent content{buffers.exrLayers(), config.workingSpaceIdentity(&writeWarnings),

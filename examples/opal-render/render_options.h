@@ -22,6 +22,7 @@ struct RenderOptions {
     bool floatPixels = false;                      // --float: 32-bit color layers
     std::optional<std::string> camera;             // --camera /Path
     std::optional<std::string> delegate;           // --delegate TYPE: a renderer plugin type
+    double time = 0.0;                             // --time SECONDS: the scene time (flicker)
 };
 
 }  // namespace opal::render

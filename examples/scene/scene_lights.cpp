@@ -1,5 +1,9 @@
 #include "examples/scene/scene_lights.h"
 
+#include "examples/scene/asset_path.h"
+#include "schema/usd/usda_reader.h"
+
+#include <algorithm>
 #include <array>
 
 namespace opal::scene {
@@ -61,8 +65,14 @@ void readDome(PrimReader& reader, hd::LightDesc& desc, const std::filesystem::pa
 
 void readShadowField(PrimReader& reader, hd::LightDesc& desc, const std::filesystem::path& layerFile) {
     const auto field = reader.existingFile("opal:field", layerFile);
-    if (!field) reader.fail(reader.prim().location, "needs opal:field, the light asset holding its shadow field");
-    desc.shadowField = field->string();
+    if (field) desc.shadowField = field->string();
+    if (desc.shadowField.empty())
+        reader.fail(reader.prim().location, "needs opal:field, the light asset holding its shadow field");
+    desc.flicker.amplitude =
+        reader.real("opal:flicker:amplitude", Float, Bounds::closed(0.0, 1.0)).value_or(desc.flicker.amplitude);
+    desc.flicker.frequency =
+        reader.real("opal:flicker:frequency", Float, Bounds::closed(0.0, 1000.0)).value_or(desc.flicker.frequency);
+    if (const auto seed = reader.get<Int>("opal:flicker:seed")) desc.flicker.seed = std::uint64_t(std::uint32_t(*seed));
 }
 
 }  // namespace
@@ -79,8 +89,9 @@ std::optional<LightType> lightTypeOf(std::string_view usdTypeName) {
     return std::nullopt;
 }
 
-hd::LightDesc readLight(PrimReader& reader, const Imath::M44d& objectToWorld, const std::filesystem::path& layerFile) {
-    hd::LightDesc desc;
+hd::LightDesc readLight(PrimReader& reader, const Imath::M44d& objectToWorld, const std::filesystem::path& layerFile,
+                        hd::LightDesc base) {
+    hd::LightDesc desc = std::move(base);
     desc.kind = lightTypeOf(reader.prim().typeName).value().kind;
     desc.transform = objectToWorld;
     readLightApi(reader, desc);
@@ -90,6 +101,31 @@ hd::LightDesc readLight(PrimReader& reader, const Imath::M44d& objectToWorld, co
         case hd::LightKind::Dome: readDome(reader, desc, layerFile); break;
         case hd::LightKind::ShadowField: readShadowField(reader, desc, layerFile); break;
     }
+    return desc;
+}
+
+hd::LightDesc referencedLight(PrimReader& reader, const std::filesystem::path& layerFile) {
+    const std::vector<usda::Reference> references = reader.prim().references.composed();
+    if (references.size() != 1 || references.front().assetPath.empty())
+        reader.fail(reader.prim().location, "has " + std::to_string(references.size()) +
+                                                " references; a light references exactly one baked light layer");
+    const usda::Reference& reference = references.front();
+    const std::filesystem::path file = resolveAssetPath(layerFile, reference.assetPath);
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(file, error))
+        reader.fail(reader.prim().location, "references @" + reference.assetPath +
+                                                "@, which does not exist (resolved to " + file.string() + ")");
+    const usda::Layer layer = usda::readUsdaFile(file);
+    const std::string name = reference.primPath.empty() ? layer.defaultPrim() : reference.primPath.substr(1);
+    const auto prim = std::find_if(layer.rootPrims.begin(), layer.rootPrims.end(),
+                                   [&](const usda::Prim& p) { return p.name == name; });
+    if (prim == layer.rootPrims.end() || prim->typeName != reader.prim().typeName)
+        reader.fail(reader.prim().location, "references @" + reference.assetPath + "@, which has no " +
+                                                reader.prim().typeName + " prim </" + name + ">");
+    PrimReader light(*prim, "/" + name);
+    hd::LightDesc desc = readLight(light, Imath::M44d(), file);
+    light.ignore("opal:bakeId");  // the layer's record of its bake (the sidecar checks it)
+    light.finish();
     return desc;
 }
 

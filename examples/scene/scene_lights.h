@@ -8,7 +8,9 @@
 //   DomeLight             inputs:texture:file (a lat-long image, anchored at the layer;
 //                         its colorSpace metadata names the image's color space),
 //                         inputs:texture:format "latlong" (or the fallback "automatic")
-//   OpalShadowFieldLight  opal:field (the light asset), passed through to the delegate
+//   OpalShadowFieldLight  opal:field (the light asset), passed through to the delegate;
+//                         opal:flicker:amplitude (0..1), opal:flicker:frequency (Hz,
+//                         0..1000), opal:flicker:seed
 #pragma once
 
 #include "delegate/hd/scene_delegate.h"
@@ -30,6 +32,16 @@ std::optional<LightType> lightTypeOf(std::string_view usdTypeName);
 // Reads the light `reader` describes (its type must be one lightTypeOf knows), placed
 // by `objectToWorld`; files are resolved against `layerFile` and must exist. Throws
 // UsdaError at the attribute at fault.
-hd::LightDesc readLight(PrimReader& reader, const Imath::M44d& objectToWorld, const std::filesystem::path& layerFile);
+// `base` holds what a referenced light layer authored (referencedLight): the prim's own
+// attributes are stronger, as in USD.
+hd::LightDesc readLight(PrimReader& reader, const Imath::M44d& objectToWorld, const std::filesystem::path& layerFile,
+                        hd::LightDesc base = {});
+
+// A light prim that references a baked light layer (`def OpalShadowFieldLight "Flame"
+// (references = @./flame.usda@)`, what `opal-bake light` writes): that layer's light prim
+// (the reference's prim path, else its defaultPrim) read as a light, its files resolved
+// against its own layer. Throws UsdaError at the reference (no such file, more than one
+// reference, a prim of another type) or inside the light layer (its own errors).
+hd::LightDesc referencedLight(PrimReader& reader, const std::filesystem::path& layerFile);
 
 }  // namespace opal::scene

@@ -6,6 +6,7 @@
 #include "examples/scene/scene_mesh.h"
 #include "examples/scene/scene_path.h"
 #include "examples/scene/xformable.h"
+#include "schema/asset/shadow_field_layer.h"
 #include "schema/usd/usda_reader.h"
 
 #include <cmath>
@@ -90,6 +91,7 @@ private:
     void readTyped(PrimReader& reader, const Inherited& self);
     void readBinding(PrimReader& reader, Inherited& self);
     void addMesh(PrimReader& reader, const Inherited& self);
+    void addLight(PrimReader& reader, const Inherited& self, hd::LightDesc base);
     void addRenderSettings(PrimReader& reader);
     void checkUnitsOf(const SceneMesh& mesh);
     void checkBindings() const;
@@ -184,6 +186,7 @@ void SceneReader::readTyped(PrimReader& reader, const Inherited& self) {
     const std::string& type = reader.prim().typeName;
     const bool reference = isAssetReference(reader.prim());
     if (reference && (type.empty() || type == "Mesh")) return addMesh(reader, self);
+    if (reference && type == kShadowFieldLightType) return addLight(reader, self, referencedLight(reader, scene_.file));
     if (reference)
         reader.fail(reader.prim().location, "references an asset, but its stronger type '" + type +
                                                 "' would replace the asset's Mesh (as in USD): use def \"Name\" or "
@@ -195,9 +198,8 @@ void SceneReader::readTyped(PrimReader& reader, const Inherited& self) {
                                             "(references = @./asset.usda@)");
     if (type == "Material") {
         scene_.materials[self.path] = {readMaterial(reader), reader.prim().location};
-    } else if (const std::optional<LightType> light = lightTypeOf(type)) {
-        hd::LightDesc desc = readLight(reader, self.toWorld, scene_.file);
-        if (self.visible) scene_.lights[self.path] = {light->primType, std::move(desc), reader.prim().location};
+    } else if (lightTypeOf(type)) {
+        addLight(reader, self, {});
     } else if (type == "Camera") {
         scene_.cameras[self.path] = {readCamera(reader, self.toWorld), reader.prim().location};
     } else {
@@ -213,6 +215,12 @@ void SceneReader::addMesh(PrimReader& reader, const Inherited& self) {
     }
     checkUnitsOf(mesh);
     scene_.meshes[self.path] = std::move(mesh);
+}
+
+void SceneReader::addLight(PrimReader& reader, const Inherited& self, hd::LightDesc base) {
+    const LightType light = lightTypeOf(reader.prim().typeName).value();
+    hd::LightDesc desc = readLight(reader, self.toWorld, scene_.file, std::move(base));
+    if (self.visible) scene_.lights[self.path] = {light.primType, std::move(desc), reader.prim().location};
 }
 
 void SceneReader::addRenderSettings(PrimReader& reader) {

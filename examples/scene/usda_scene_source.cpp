@@ -3,6 +3,8 @@
 #include "schema/error.h"
 #include "schema/usd/usda_error.h"
 
+#include <cmath>
+
 namespace opal::scene {
 namespace {
 
@@ -51,7 +53,18 @@ hd::MaterialDesc UsdaSceneSource::material(const hd::SdfPath& id) const {
 }
 
 hd::LightDesc UsdaSceneSource::light(const hd::SdfPath& id) const {
-    return lookUp(scene_.lights, id, scene_, "light").desc;
+    hd::LightDesc desc = lookUp(scene_.lights, id, scene_, "light").desc;
+    desc.time = time_;
+    return desc;
+}
+
+void UsdaSceneSource::setTime(double seconds, hd::RenderIndex& index) {
+    if (!std::isfinite(seconds)) throw Error(scene_.file.string() + ": the scene time is not finite");
+    if (seconds == time_) return;
+    time_ = seconds;
+    for (const auto& [id, light] : scene_.lights)
+        if (light.desc.kind == hd::LightKind::ShadowField && light.desc.flicker.amplitude > 0.0)
+            index.changeTracker().markDirty(id, hd::Dirty::Params);
 }
 
 hd::CameraDesc UsdaSceneSource::camera(const hd::SdfPath& id) const {

@@ -16,6 +16,11 @@ public:
 
     const Scene& scene() const { return scene_; }
 
+    // The scene time in seconds (0 at first) at which time-varying lights (a shadow-field
+    // light's flicker) are described. Setting it marks those lights dirty in `index`.
+    double time() const { return time_; }
+    void setTime(double seconds, hd::RenderIndex& index);
+
     // Inserts every material and camera and light (Sprims), then every mesh (Rprims).
     // A prim the index refuses (a type the delegate does not support, e.g. a shadow-field
     // light) throws usda::UsdaError at the prim with the index's message.
@@ -29,6 +34,7 @@ public:
 
 private:
     Scene scene_;
+    double time_ = 0.0;
 };
 
 }  // namespace opal::scene

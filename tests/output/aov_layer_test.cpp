@@ -43,7 +43,7 @@ TEST(AovLayer, UnknownNameListsTheKnownOnes) {
         FAIL() << "expected an error";
     } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find(
-                      "color, subsurface, specular, irradiance, normal, depth, primId, alpha"),
+                      "color, subsurface, specular, emission, irradiance, normal, depth, primId, alpha"),
                   std::string::npos)
             << e.what();
     }

@@ -26,7 +26,8 @@ TEST(RenderDelegate, CreatesItsPrimTypesAndNothingElse) {
     for (const hd::Token& type : delegate.supportedSprimTypes()) EXPECT_NE(delegate.createSprim(type, "/s"), nullptr) << type;
     EXPECT_NE(delegate.createRprim(hd::PrimType::TranslucentMesh, "/m"), nullptr);
     EXPECT_NE(delegate.createBprim(hd::PrimType::RenderBuffer, "/b"), nullptr);
-    EXPECT_EQ(delegate.createSprim(hd::PrimType::ShadowFieldLight, "/l"), nullptr);
+    EXPECT_NE(delegate.createSprim(hd::PrimType::ShadowFieldLight, "/l"), nullptr);
+    EXPECT_EQ(delegate.createSprim("rectLight", "/r"), nullptr);
     EXPECT_EQ(delegate.createRprim("basisCurves", "/c"), nullptr);
     EXPECT_EQ(delegate.createSprim(hd::PrimType::TranslucentMesh, "/m"), nullptr);
 

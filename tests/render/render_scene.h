@@ -219,9 +219,10 @@ inline void addCamera(CountingScene& scene, hd::RenderIndex& index, const hd::Ca
 
 inline void addLight(CountingScene& scene, hd::RenderIndex& index, const hd::SdfPath& path, const hd::LightDesc& desc) {
     scene.lights[path] = desc;
-    const hd::Token type = desc.kind == hd::LightKind::Dome      ? hd::PrimType::DomeLight
-                           : desc.kind == hd::LightKind::Distant ? hd::PrimType::DistantLight
-                                                                 : hd::PrimType::SphereLight;
+    const hd::Token type = desc.kind == hd::LightKind::Dome          ? hd::PrimType::DomeLight
+                           : desc.kind == hd::LightKind::Distant     ? hd::PrimType::DistantLight
+                           : desc.kind == hd::LightKind::ShadowField ? hd::PrimType::ShadowFieldLight
+                                                                     : hd::PrimType::SphereLight;
     index.insertSprim(type, scene, path);
 }
 

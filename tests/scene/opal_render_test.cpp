@@ -98,9 +98,9 @@ TEST(OpalRender, WritesALitMultiLayerExrAndAPreview) {
     EXPECT_EQ(spec.width, 48);
     EXPECT_EQ(spec.height, 32);
     const std::vector<std::string> expected = {
-        "A",          "B",          "G",          "R",          "depth.Z",         "irradiance.B",   "irradiance.G",
-        "irradiance.R", "normal.X", "normal.Y",   "normal.Z",   "primId.id",       "specular.B",     "specular.G",
-        "specular.R", "subsurface.B", "subsurface.G", "subsurface.R"};
+        "A",          "B",          "G",          "R",          "depth.Z",      "emission.B",   "emission.G",
+        "emission.R", "irradiance.B", "irradiance.G", "irradiance.R", "normal.X", "normal.Y", "normal.Z",
+        "primId.id", "specular.B", "specular.G", "specular.R", "subsurface.B", "subsurface.G", "subsurface.R"};
     EXPECT_EQ(channelNames(spec), expected);
     EXPECT_EQ(spec.get_string_attribute("oiio:ColorSpace"), "ACEScg");
     EXPECT_EQ(spec.get_string_attribute("opal/scene"), (dir / "scene.usda").string());
@@ -186,7 +186,7 @@ TEST(OpalRender, RendersTheCandleDemoOnABakedCandle) {
     const OIIO::ImageSpec spec = in->spec();
     ASSERT_EQ(spec.width, 96);
     ASSERT_EQ(spec.height, 64);
-    EXPECT_EQ(spec.nchannels, 18);
+    EXPECT_EQ(spec.nchannels, 21);
     EXPECT_EQ(spec.get_string_attribute("opal/camera"), "/World/Camera");
     std::vector<float> pixels(std::size_t(spec.width) * spec.height * spec.nchannels);
     ASSERT_TRUE(in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data()));

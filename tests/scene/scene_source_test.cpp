@@ -9,6 +9,8 @@
 #include "examples/scene/usda_scene_source.h"
 #include "tests/scene/scene_test_files.h"
 
+#include "schema/asset/shadow_field_layer.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -477,6 +479,75 @@ TEST(SceneSource, RefusedPrimNamesItsLocation) {
     } catch (const Error& e) {
         EXPECT_EQ(std::string(e.what()), file.string() + ":2:1: </Flame>: render index: the render delegate does not "
                                                           "support prim type 'opalShadowFieldLight' (/Flame)");
+    }
+}
+
+TEST(SceneSource, ShadowFieldFlickerIsReadAndTheTimeReachesTheLight) {
+    const test::SceneDir dir;
+    dir.write("flame.field", "only resolved here");
+    AssetCache assets;
+    const std::string light = "#usda 1.0\ndef OpalShadowFieldLight \"Flame\"\n{\n    asset opal:field = @./flame.field@\n";
+    UsdaSceneSource source(readScene(
+        dir.write("scene.usda", light + "    float opal:flicker:amplitude = 0.25\n    float opal:flicker:frequency = 5\n"
+                                        "    int opal:flicker:seed = 7\n}\n"),
+        assets));
+    const hd::LightDesc flame = source.light("/Flame");
+    EXPECT_DOUBLE_EQ(flame.flicker.amplitude, 0.25);
+    EXPECT_DOUBLE_EQ(flame.flicker.frequency, 5.0);
+    EXPECT_EQ(flame.flicker.seed, 7u);
+    EXPECT_EQ(flame.time, 0.0);
+    PullingDelegate delegate;
+    hd::RenderIndex index(delegate);
+    source.setTime(1.5, index);
+    EXPECT_EQ(source.light("/Flame").time, 1.5);
+    EXPECT_THROW(source.setTime(std::nan(""), index), Error);
+
+    const std::filesystem::path bad =
+        dir.write("bad.usda", light + "    float opal:flicker:amplitude = 2\n}\n");
+    try {
+        (void)readScene(bad, assets);
+        FAIL() << "an amplitude of 2 was read";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find(":5:5: OpalShadowFieldLight </Flame>: attribute 'opal:flicker:amplitude' "
+                                             "is 2, expected a value in [0, 1]"),
+                  std::string::npos)
+            << e.what();
+    }
+}
+
+TEST(SceneSource, ALightReferencesTheLayerOpalBakeLightWrote) {
+    const test::SceneDir dir;
+    dir.write("flame.0123456789abcdef.opal", "only resolved here");
+    writeShadowFieldLayer(dir / "flame.usda", "flame", "./flame.0123456789abcdef.opal", 0x0123456789abcdefull);
+    AssetCache assets;
+    const UsdaSceneSource source(readScene(dir.write("scene.usda", R"(#usda 1.0
+def OpalShadowFieldLight "Flame" (
+    references = @./flame.usda@
+)
+{
+    float inputs:intensity = 5
+    double3 xformOp:translate = (0, 84, 0)
+    uniform token[] xformOpOrder = ["xformOp:translate"]
+}
+)"),
+                                           assets));
+    const hd::LightDesc flame = source.light("/Flame");
+    EXPECT_EQ(flame.kind, hd::LightKind::ShadowField);
+    EXPECT_EQ(flame.shadowField, (dir / "flame.0123456789abcdef.opal").string());
+    EXPECT_DOUBLE_EQ(flame.intensity, 5.0);  // the referencing prim's, stronger
+    EXPECT_EQ(flame.color, Rgb(1.0, 1.0, 1.0));  // the layer's
+    EXPECT_DOUBLE_EQ(flame.transform[3][1], 84.0);
+
+    try {
+        (void)readScene(dir.write("bad.usda", "#usda 1.0\ndef OpalShadowFieldLight \"F\" (\n    references = "
+                                              "@./scene.usda@\n)\n{\n}\n"),
+                        assets);
+        FAIL() << "a scene layer was read as a light layer";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("bad.usda:2:1: OpalShadowFieldLight </F>: references @./scene.usda@, "
+                                             "which has no OpalShadowFieldLight prim"),
+                  std::string::npos)
+            << e.what();
     }
 }
 

@@ -1,0 +1,219 @@
+#include "delegate/relight/shadow_field_light.h"
+
+#include "delegate/relight/light_emission.h"
+#include "raytrace/ray_scene.h"
+#include "schema/error.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <Imath/ImathMatrixAlgo.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace opal {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+// Texels per side of a visibility block: one occlusion ray per lit block.
+constexpr std::uint32_t kBlockSide = 4;
+// The shell the camera's map is taken on: about this many emitter radii out.
+constexpr double kCameraShellRadii = 3.0;
+
+double channelSum(const Imath::V3d& v) { return v.x + v.y + v.z; }
+
+// The sphere light with the emitter's bounding radius whose intensity, seen from outside,
+// is the field's mean far-field intensity times the light's emission (analytic_light.h:
+// I = L_e pi r^2).
+AnalyticLight highlightOf(const LoadedShadowField& field, const Imath::V3d& emission, const Imath::V3d& centre,
+                          double radius) {
+    hd::LightDesc desc;
+    desc.kind = hd::LightKind::Sphere;
+    desc.transform.setTranslation(centre);
+    desc.radius = radius;
+    const Imath::V3d intensity = field.meanIntensity * emission;
+    const double area = kPi * radius * radius;
+    desc.color = Rgb(intensity.x / area, intensity.y / area, intensity.z / area);
+    desc.intensity = 1.0;
+    return AnalyticLight::fromDesc(desc);
+}
+
+Imath::V3d emissionOf(const hd::LightDesc& desc) {
+    const Rgb le = emittedRadiance(desc);
+    return {le.x, le.y, le.z};
+}
+
+}  // namespace
+
+LoadedShadowField::LoadedShadowField(ShadowField f) : field(std::move(f)), lookup(field), cosine(lookup.mapLayout()) {
+    // The mean of I(w) over directions, from the outer shell's 24 coarsest directions
+    // (enough for a highlight's strength: the far field is smooth by construction).
+    const CubeMapLayout directions(2);
+    for (std::uint32_t i = 0; i < directions.texels(); ++i)
+        meanIntensity += lookup.farIntensity(Imath::V3d(directions.direction(i))) *
+                         (directions.solidAngle(i) / (4.0 * kPi));
+}
+
+ShadowFieldLight::ShadowFieldLight(std::shared_ptr<const LoadedShadowField> field, const hd::LightDesc& desc)
+    : field_(std::move(field)) {
+    if (!field_) throw Error("shadow-field light: no field");
+    if (desc.kind != hd::LightKind::ShadowField) throw Error("shadow-field light: the description is another kind");
+    rotation_ = rotationOf(desc.transform, "shadow-field light");
+    scale_ = Imath::V3d(desc.transform[0][0], desc.transform[0][1], desc.transform[0][2]).length();
+    const ShadowField& f = field_->field;
+    const FlickerState flicker = lightFlicker(desc.flicker, desc.time);
+    Imath::M44d jitter;  // the flicker's sway, in the light's frame (row vectors: applied first)
+    jitter.setTranslation(flicker.offset * f.emitterRadius);
+    lightToWorld_ = jitter * desc.transform;
+    worldToLight_ = lightToWorld_.inverse();
+    emission_ = emissionOf(desc) * flicker.intensity;
+    lightToWorld_.multVecMatrix(f.centre, centre_);
+    radius_ = f.emitterRadius * scale_;
+    highlight_ = highlightOf(*field_, emission_, centre_, radius_);
+}
+
+Imath::V3d ShadowFieldLight::toLight(const Imath::V3d& world) const {
+    Imath::V3d p;
+    worldToLight_.multVecMatrix(world, p);
+    return p;
+}
+
+// Light-frame distance from p along unit d to where the ray enters the emitter's bounding
+// sphere (to its point nearest the centre when it passes beside it; 0 inside it).
+double ShadowFieldLight::shadowReach(const Imath::V3d& p, const Imath::V3d& d) const {
+    const ShadowField& f = field_->field;
+    const Imath::V3d oc = p - f.centre;
+    const double b = oc.dot(d), c = oc.length2() - f.emitterRadius * f.emitterRadius;
+    if (c <= 0.0) return 0.0;
+    const double disc = b * b - c;
+    if (disc >= 0.0 && -b - std::sqrt(disc) > 0.0) return -b - std::sqrt(disc);
+    return std::max(0.0, -b);
+}
+
+Imath::V3d ShadowFieldLight::irradiance(const Imath::V3d& point, const Imath::V3d& normal) const {
+    return field_->lookup.irradiance(toLight(point), normal * rotation_.transposed()) * emission_;
+}
+
+// One lit block of texels: its irradiance and the irradiance-weighted sum of directions.
+struct ShadowFieldLight::Texels {
+    Imath::V3d e{0.0};
+    Imath::V3d direction{0.0};
+};
+
+LightArrival ShadowFieldLight::arrivalInField(const Imath::V3d& x, const Imath::V3d& n, const RayScene* scene,
+                                              float offset) const {
+    const Imath::V3d p = toLight(x), nl = n * rotation_.transposed();
+    const std::vector<Imath::V3f> radiance = field_->lookup.incidentRadiance(p);
+    const CubeMapLayout& layout = field_->lookup.mapLayout();
+    const std::uint32_t side = std::max<std::uint32_t>(1, layout.faceSize() / kBlockSide);
+    std::vector<Texels> blocks(6 * side * side);
+    for (std::uint32_t k = 0; k < radiance.size(); ++k) {
+        const Imath::V3f& l = radiance[k];
+        if (l.x + l.y + l.z <= 0.0f) continue;
+        const double w = field_->cosine.weight(k, nl);
+        if (w <= 0.0) continue;
+        const CubeMapTexel t = layout.texel(k);
+        Texels& block = blocks[(t.face * side + t.v / kBlockSide) * side + t.u / kBlockSide];
+        const Imath::V3d e = Imath::V3d(l) * w;
+        block.e += e;
+        block.direction += Imath::V3d(layout.direction(k)) * channelSum(e);
+    }
+    Imath::V3d total(0.0);
+    double cosineSum = 0.0;
+    const Imath::V3f origin = Imath::V3f(x + n * double(offset));
+    for (const Texels& block : blocks) {
+        if (channelSum(block.e) <= 0.0) continue;
+        const Imath::V3d d = block.direction.normalized();
+        if (scene) {
+            const double reach = shadowReach(p, d) * scale_ * (1.0 - 1e-4);
+            if (reach > 0.0 && scene->occluded(Ray(origin, Imath::V3f(d * rotation_), 0.0f, float(reach)))) continue;
+        }
+        total += block.e;
+        cosineSum += channelSum(block.e) * std::max(0.0, d.dot(nl));
+    }
+    const double sum = channelSum(total);
+    if (!(sum > 0.0)) return {};
+    const double mu = std::clamp(cosineSum / sum, 1e-3, 1.0);
+    const Imath::V3d perp = total * emission_ / mu;
+    return {float(mu), Imath::V3f(perp)};
+}
+
+LightArrival ShadowFieldLight::arrivalBeyond(const Imath::V3d& x, const Imath::V3d& n, const RayScene* scene,
+                                             float offset) const {
+    const ShadowField& f = field_->field;
+    const Imath::V3d p = toLight(x);
+    const Imath::V3d outward = p - f.centre;
+    const double r = outward.length();
+    const Imath::V3d w = outward / r;  // from the centre toward the sample
+    const double mu = (n * rotation_.transposed()).dot(-w);
+    if (mu <= 0.0) return {};
+    if (scene) {
+        const Imath::V3f origin = Imath::V3f(x + n * double(offset));
+        const double reach = shadowReach(p, -w) * scale_ * (1.0 - 1e-4);
+        if (reach > 0.0 && scene->occluded(Ray(origin, Imath::V3f(-w * rotation_), 0.0f, float(reach)))) return {};
+    }
+    Imath::V3d perp = field_->lookup.farIntensity(w) * emission_ / (r * r);
+    for (int c = 0; c < 3; ++c) perp[c] = std::min(perp[c], kMaxSampleIrradiance);
+    return {float(mu), Imath::V3f(perp)};
+}
+
+std::vector<LightArrival> ShadowFieldLight::arrivals(const PlacedSamples& samples, const RayScene* scene,
+                                                     float offset) const {
+    const std::size_t n = samples.positions.size();
+    std::vector<LightArrival> result(n);
+    const double outer = field_->field.radii.back();
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 64), [&](const tbb::blocked_range<std::size_t>& range) {
+        for (std::size_t i = range.begin(); i != range.end(); ++i) {
+            const Imath::V3d x(samples.positions[i]), normal(samples.normals[i]);
+            const bool beyond = (toLight(x) - field_->field.centre).length() > outer;
+            result[i] = beyond ? arrivalBeyond(x, normal, scene, offset) : arrivalInField(x, normal, scene, offset);
+        }
+    });
+    return result;
+}
+
+EmitterImage ShadowFieldLight::cameraImage(const Imath::V3d& eye) const {
+    const ShadowField& f = field_->field;
+    const double target = kCameraShellRadii * f.emitterRadius;
+    const auto shell = std::min_element(f.radii.begin(), f.radii.end(), [&](double a, double b) {
+        return std::abs(a - target) < std::abs(b - target);
+    });
+    Imath::V3d toEye = toLight(eye) - f.centre;
+    if (!(toEye.length() > 0.0)) toEye = Imath::V3d(0.0, 0.0, 1.0);
+    const Imath::V3d qLight = f.centre + toEye.normalized() * *shell;
+    EmitterImage image;
+    image.centre = centre_;
+    image.radius = radius_;
+    lightToWorld_.multVecMatrix(qLight, image.q);
+    image.lightFromWorld = rotation_.transposed();
+    image.faceSize = field_->lookup.mapLayout().faceSize();
+    image.radiance = field_->lookup.incidentRadiance(qLight);
+    const Imath::V3f scale(emission_);
+    for (Imath::V3f& l : image.radiance) l *= scale;
+    return image;
+}
+
+Imath::V3f EmitterImage::along(const Imath::V3d& o, const Imath::V3d& d, double& t) const {
+    t = (centre - o).dot(d);
+    const Imath::V3d nearest = o + d * t;
+    if ((nearest - centre).length2() >= radius * radius || t <= 0.0) return Imath::V3f(0.0f);
+    const Imath::V3d w = ((nearest - q) * lightFromWorld).normalized();
+    // Bilinear over the face's texel centres (clamped at its edges): a texel is several
+    // pixels wide where the emitter fills the picture.
+    const CubeFacePoint p = CubeMapLayout::facePoint(Imath::V3f(w));
+    const float last = float(faceSize - 1);
+    const auto texelCoordinate = [&](float c) { return std::clamp((c + 1.0f) * 0.5f * float(faceSize) - 0.5f, 0.0f, last); };
+    const float x = texelCoordinate(p.s), y = texelCoordinate(p.t);
+    const std::uint32_t x0 = std::uint32_t(x), y0 = std::uint32_t(y);
+    const std::uint32_t x1 = std::min(x0 + 1, faceSize - 1), y1 = std::min(y0 + 1, faceSize - 1);
+    const float fx = x - float(x0), fy = y - float(y0);
+    const auto at = [&](std::uint32_t u, std::uint32_t v) { return radiance[(p.face * faceSize + v) * faceSize + u]; };
+    return (at(x0, y0) * (1.0f - fx) + at(x1, y0) * fx) * (1.0f - fy) + (at(x0, y1) * (1.0f - fx) + at(x1, y1) * fx) * fy;
+}
+
+}  // namespace opal

@@ -1,0 +1,116 @@
+// A shadow-field local light (Zhou et al. 2005; docs/ARCHITECTURE.md#shadow-field-light): a
+// baked source radiance field (schema/asset/shadow_field.h) placed in the world by the
+// prim's transform and scaled by its color * intensity * 2^exposure (times its flicker at
+// the scene time, light_flicker.h).
+//
+// At a sample x with normal n (both taken into the light's frame, mm):
+//   - inside the field (and inside its inner sphere: the nearest shell), the incident
+//     radiance cube map L_k(x) of ShadowFieldLookup, and
+//         E(x) = sum_k L_k W_k(n) V_k(x),
+//     W_k(n) the texel's clamped-cosine integral (cube_map_cosine.h) and V_k the visibility
+//     toward the emitter along texel k. V_k is traced, distance-aware: one occlusion ray per
+//     lit block of 4 x 4 texels, along the block's irradiance-weighted direction, ending
+//     where that ray enters the emitter's bounding sphere. A blocker beyond the emitter
+//     (the far rim of a melted candle, seen past the flame) therefore never shadows it;
+//     the emitter itself is not in the ray scene and never blocks.
+//   - beyond the outer sphere, the field's far-field point light: E_perp = I(w) / r^2 with
+//     one occlusion ray to the emitter's bounding sphere.
+// What the irradiance moments need is one direction per sample: the light arrives over the
+// emitter's solid angle, so the sample keeps mu_eff, the irradiance-weighted mean cosine,
+// and E_perp = E / mu_eff. The cosine is then exact (E is), and F_t(eta, mu) is taken at
+// mu_eff (F_t varies slowly away from grazing; the reference mode uses the same E and
+// mu_eff, so it checks the transfer, not this step).
+//
+// For the specular layer the light is the sphere light of the emitter's bounding radius
+// and its mean far-field intensity; for the camera the emitter is drawn from one decoded
+// map (cameraImage).
+#pragma once
+
+#include "delegate/hd/scene_delegate.h"
+#include "delegate/relight/analytic_light.h"
+#include "delegate/relight/irradiance.h"
+#include "delegate/relight/light_flicker.h"
+#include "schema/asset/cube_map_cosine.h"
+#include "schema/asset/shadow_field_lookup.h"
+
+#include <Imath/ImathMatrix.h>
+#include <Imath/ImathVec.h>
+
+#include <memory>
+#include <vector>
+
+namespace opal {
+
+class RayScene;
+
+// A baked field with what evaluating it needs, shared by every light prim that uses the file.
+struct LoadedShadowField {
+    ShadowField field;
+    ShadowFieldLookup lookup;
+    CubeMapCosineIntegral cosine;
+    Imath::V3d meanIntensity{0.0};  // of the far-field point light, over all directions
+
+    explicit LoadedShadowField(ShadowField f);
+    LoadedShadowField(const LoadedShadowField&) = delete;
+    LoadedShadowField& operator=(const LoadedShadowField&) = delete;
+};
+
+// The emitter as the camera at `eye` sees it: the field's incident-radiance map at the point
+// q of one shell (radius about 3 emitter radii) on the line from the emitter's centre to the
+// eye. A camera ray passing the centre at offset b (b perpendicular to the ray, |b| < the
+// emitter radius) sees the radiance L_q(w) along w = the direction from q to centre + b:
+// the line through the same point of the emitter, tilted by at most atan(a / r_shell)
+// (documented as the parallax of this approximation).
+struct EmitterImage {
+    Imath::V3d centre;              // world
+    double radius = 0.0;            // world: the emitter's bounding radius
+    Imath::V3d q;                   // world: where the map was taken
+    Imath::M33d lightFromWorld;     // rotation into the light's frame (the map's directions)
+    std::uint32_t faceSize = 0;     // of the map (CubeMapLayout)
+    std::vector<Imath::V3f> radiance;  // per texel, scaled: what the camera sees
+
+    // The radiance along a camera ray (world origin o, unit direction d), 0 when the ray
+    // does not pass within `radius` of the centre; `t` is set to the ray parameter of the
+    // point nearest the centre.
+    Imath::V3f along(const Imath::V3d& o, const Imath::V3d& d, double& t) const;
+};
+
+class ShadowFieldLight {
+public:
+    // Throws opal::Error for a desc that is not a shadow-field light, a transform that is not
+    // rotation x uniform scale x translation, or invalid emission.
+    ShadowFieldLight(std::shared_ptr<const LoadedShadowField> field, const hd::LightDesc& desc);
+
+    // The shadowed irradiance at each placed sample, in the one-direction form of
+    // LightArrival (mu_eff, E / mu_eff). Shadow rays start `offset` along the normal; scene
+    // may be null (no shadows). Parallel over samples.
+    std::vector<LightArrival> arrivals(const PlacedSamples& samples, const RayScene* scene, float offset) const;
+
+    // The unshadowed E(x) for a world point and unit normal: the field's irradiance, scaled.
+    Imath::V3d irradiance(const Imath::V3d& point, const Imath::V3d& normal) const;
+
+    // The sphere light the specular layer uses for this light.
+    const AnalyticLight& highlight() const { return highlight_; }
+    EmitterImage cameraImage(const Imath::V3d& eye) const;
+
+    Imath::V3d centre() const { return centre_; }   // world
+    double emitterRadius() const { return radius_; }  // world
+
+private:
+    struct Texels;
+    LightArrival arrivalInField(const Imath::V3d& x, const Imath::V3d& n, const RayScene* scene, float offset) const;
+    LightArrival arrivalBeyond(const Imath::V3d& x, const Imath::V3d& n, const RayScene* scene, float offset) const;
+    Imath::V3d toLight(const Imath::V3d& world) const;  // a world point in the light's frame (mm)
+    double shadowReach(const Imath::V3d& pointLight, const Imath::V3d& directionLight) const;
+
+    std::shared_ptr<const LoadedShadowField> field_;
+    Imath::M44d lightToWorld_, worldToLight_;
+    Imath::M33d rotation_;  // light to world, scale removed
+    double scale_ = 1.0;    // world units per light-frame mm
+    Imath::V3d emission_;   // color * intensity * 2^exposure * flicker
+    Imath::V3d centre_;     // world
+    double radius_ = 0.0;   // world
+    AnalyticLight highlight_;
+};
+
+}  // namespace opal
