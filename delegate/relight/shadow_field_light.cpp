@@ -57,6 +57,14 @@ LoadedShadowField::LoadedShadowField(ShadowField f) : field(std::move(f)), looku
     for (std::uint32_t i = 0; i < directions.texels(); ++i)
         meanIntensity += lookup.farIntensity(Imath::V3d(directions.direction(i))) *
                          (directions.solidAngle(i) / (4.0 * kPi));
+    const CubeMapLayout& layout = lookup.mapLayout();
+    const std::uint32_t side = std::max<std::uint32_t>(1, layout.faceSize() / kBlockSide);
+    blocks = 6 * side * side;
+    for (std::uint32_t k = 0; k < layout.texels(); ++k) {
+        const CubeMapTexel t = layout.texel(k);
+        texelDirections.push_back(layout.direction(k));
+        texelBlocks.push_back((t.face * side + t.v / kBlockSide) * side + t.u / kBlockSide);
+    }
 }
 
 ShadowFieldLight::ShadowFieldLight(std::shared_ptr<const LoadedShadowField> field, const hd::LightDesc& desc)
@@ -109,19 +117,16 @@ LightArrival ShadowFieldLight::arrivalInField(const Imath::V3d& x, const Imath::
                                               float offset) const {
     const Imath::V3d p = toLight(x), nl = n * rotation_.transposed();
     const std::vector<Imath::V3f> radiance = field_->lookup.incidentRadiance(p);
-    const CubeMapLayout& layout = field_->lookup.mapLayout();
-    const std::uint32_t side = std::max<std::uint32_t>(1, layout.faceSize() / kBlockSide);
-    std::vector<Texels> blocks(6 * side * side);
+    std::vector<Texels> blocks(field_->blocks);
     for (std::uint32_t k = 0; k < radiance.size(); ++k) {
         const Imath::V3f& l = radiance[k];
         if (l.x + l.y + l.z <= 0.0f) continue;
         const double w = field_->cosine.weight(k, nl);
         if (w <= 0.0) continue;
-        const CubeMapTexel t = layout.texel(k);
-        Texels& block = blocks[(t.face * side + t.v / kBlockSide) * side + t.u / kBlockSide];
+        Texels& block = blocks[field_->texelBlocks[k]];
         const Imath::V3d e = Imath::V3d(l) * w;
         block.e += e;
-        block.direction += Imath::V3d(layout.direction(k)) * channelSum(e);
+        block.direction += Imath::V3d(field_->texelDirections[k]) * channelSum(e);
     }
     Imath::V3d total(0.0);
     double cosineSum = 0.0;

@@ -49,6 +49,10 @@ struct LoadedShadowField {
     ShadowFieldLookup lookup;
     CubeMapCosineIntegral cosine;
     Imath::V3d meanIntensity{0.0};  // of the far-field point light, over all directions
+    // Per map texel: its centre direction, and its visibility block (4 x 4 texels of a face).
+    std::vector<Imath::V3f> texelDirections;
+    std::vector<std::uint32_t> texelBlocks;
+    std::uint32_t blocks = 0;
 
     explicit LoadedShadowField(ShadowField f);
     LoadedShadowField(const LoadedShadowField&) = delete;

@@ -79,12 +79,21 @@ FieldStencil ShadowFieldLookup::stencil(const Imath::V3d& point) const {
 
 std::vector<Imath::V3f> ShadowFieldLookup::blend(std::span<const MapWeight> maps) const {
     std::vector<float> coefficients(3 * std::size_t(mapLayout_.texels()), 0.0f);
+    const std::uint32_t faceTexels = mapLayout_.faceSize() * mapLayout_.faceSize();
+    std::array<bool, 6> lit{};  // faces with a kept coefficient; the others stay 0
     for (const MapWeight& m : maps) {
-        for (std::uint64_t k = field_.offsets[m.map]; k < field_.offsets[m.map + 1]; ++k)
+        for (std::uint64_t k = field_.offsets[m.map]; k < field_.offsets[m.map + 1]; ++k) {
+            lit[field_.indices[k] / faceTexels] = true;
             for (int c = 0; c < 3; ++c)
                 coefficients[3 * std::size_t(field_.indices[k]) + c] += float(m.weight * field_.values[3 * k + c]);
+        }
     }
-    haarInverseCharts<float>(coefficients, mapLayout_.charts(), 3);
+    // The inverse transform of a face of zeros is zeros: only the lit faces are synthesized
+    // (a compact emitter lights 1 to 3 faces of each map).
+    for (std::uint32_t face = 0; face < 6; ++face)
+        if (lit[face])
+            haarInverse2D<float>(std::span(coefficients).subspan(std::size_t(face) * faceTexels * 3, faceTexels * 3),
+                                 mapLayout_.faceSize(), 3);
     // Radiance is never negative: what the truncated Haar series rings below 0 is 0.
     std::vector<Imath::V3f> radiance(mapLayout_.texels());
     for (std::size_t i = 0; i < radiance.size(); ++i)
