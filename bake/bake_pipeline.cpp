@@ -35,8 +35,6 @@ namespace opal {
 
 namespace {
 
-constexpr std::string_view kBuiltinCandle = "builtin:candle";
-
 // Times each stage for the report.
 class StageClock {
 public:
@@ -67,7 +65,8 @@ void reportFileUnits(const BakeOptions& options, std::optional<double> metersPer
 }
 
 ImportedMesh loadControlMesh(const BakeOptions& options, std::vector<std::string>* warnings) {
-    if (options.input == kBuiltinCandle) return ImportedMesh{makeCandle(), {}, std::nullopt, std::nullopt};
+    if (std::optional<ControlMesh> builtin = builtinMesh(options.input))
+        return ImportedMesh{std::move(*builtin), {}, std::nullopt, std::nullopt};
     ImportedMesh imported = importMesh(options.input);
     checkPointRange(imported.mesh.positions, options.unitsPerMm, imported.mesh.source + " (at --units-per-mm)",
                     "vertex");
@@ -133,7 +132,7 @@ ProfileBasis fitBasis(const BakeOptions& options, const std::string& assetName, 
 }
 
 std::string assetName(const std::string& input) {
-    if (input == kBuiltinCandle) return "candle";
+    if (builtinMesh(input)) return input.substr(input.find(':') + 1);  // "builtin:wick" -> "wick"
     return assetNameFrom(std::filesystem::path(input).stem().string());
 }
 

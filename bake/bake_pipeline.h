@@ -18,7 +18,7 @@
 namespace opal {
 
 struct BakeOptions {
-    std::string input;                // a mesh file, or "builtin:candle"
+    std::string input;                // a mesh file, or a built-in mesh ("builtin:candle")
     std::string scheme = "auto";      // auto | catmullClark | loop
     std::optional<std::uint32_t> level;  // uniform subdivision level; empty: automaticSubdivisionLevel
     std::uint64_t samples = 16384;    // N = M x 4^n

@@ -5,6 +5,7 @@
 // SIGINT/SIGTERM (nothing written; a previous asset stays intact).
 #include "bake/bake_pipeline.h"
 #include "bake/bake_report.h"
+#include "bake/procedural_mesh.h"
 #include "bake/tool/light_command.h"
 
 #include <CLI/CLI.hpp>
@@ -46,7 +47,8 @@ int main(int argc, char** argv) {
     std::string outStem, jsonPath, range;
     bool quiet = false;
     // Required unless the `light` subcommand is given (checked after parsing).
-    app.add_option("input", options.input, "mesh file (.obj .ply .gltf .glb .stl .usda) or builtin:candle");
+    app.add_option("input", options.input,
+                   "mesh file (.obj .ply .gltf .glb .stl .usda) or a built-in mesh: " + opal::builtinMeshNames());
     app.add_option("-o,--output", outStem, "output stem: writes STEM.usda and its sidecar STEM.<bake id>.opal");
     opal::LightCommand light(app);  // not const: parsing writes its options
     app.require_subcommand(0, 1);

@@ -3,6 +3,7 @@
 // must read back (OpenImageIO) with Opal's channels, the working space's metadata and lit
 // pixels; a malformed scene must exit 1 naming file:line:column and leave no file behind.
 #include "bake/bake_pipeline.h"
+#include "tests/scene/candle_scene_assets.h"
 #include "tests/scene/scene_test_files.h"
 #include "tests/render/render_scene.h"
 
@@ -164,19 +165,11 @@ TEST(OpalRender, EveryAovOfTheTableIsWrittenAsItsRowSays) {
     }
 }
 
-// The shipped demo scene on a candle baked here with small counts (512 samples, level 1,
-// an 8 x 8 environment cube map): the flame lights the melt pool, the dim dome the rest.
+// The shipped demo scene on its candle, wick and flame baked here with small counts
+// (candle_scene_assets.h): the flame lights the melt pool, the dim dome the rest.
 TEST(OpalRender, RendersTheCandleDemoOnABakedCandle) {
     const test::SceneDir dir;
-    BakeOptions options;
-    options.input = "builtin:candle";
-    options.level = 1;
-    options.samples = 512;
-    options.visibility.cubeFaceSize = 8;
-    options.visibility.terms = 32;
-    writeBakedAsset(dir / "candle", bakeAsset(options, nullptr, CancelToken{}, nullptr), nullptr);
-    std::filesystem::copy_file(std::filesystem::path(OPAL_SOURCE_DIR) / "examples/scenes/candlelight.usda",
-                               dir / "candlelight.usda");
+    test::writeCandleScene(dir);
     const ProcessResult run = runOpalRender(dir, "'" + (dir / "candlelight.usda").string() + "' -o '" +
                                                      (dir / "candle.exr").string() + "' --resolution 96x64");
     ASSERT_EQ(run.exitCode, 0) << run.err;
