@@ -2,6 +2,7 @@
 
 #include "bake/light/cube_map_compression.h"
 #include "bake/light/emitter_scene.h"
+#include "bake/light/emitter_view_render.h"
 #include "bake/light/incident_radiance.h"
 #include "schema/asset/array_codec.h"
 #include "schema/asset/shadow_field_checks.h"
@@ -23,6 +24,10 @@ void checkSettings(const FieldSettings& s) {
     if (!(s.innerScale > 1.0 && s.outerScale > s.innerScale && std::isfinite(s.outerScale)))
         throw Error("light bake: shell radii need 1 < inner scale < outer scale");
     if (!(s.keptEnergy > 0.0 && s.keptEnergy <= 1.0)) throw Error("light bake: kept energy must be in (0, 1]");
+    EmitterViews views;
+    views.directionFaceSize = s.viewFaceSize;
+    views.imageSize = s.viewImageSize;
+    shadow_field::checkViewSizes(views, "light bake");
 }
 
 struct MapError {
@@ -114,6 +119,12 @@ ShadowField bakeShadowField(const Emitter& emitter, const FieldSettings& s, Prog
         maps[m] = {};
     }
     roundValues(field, errors);
+    {
+        const StageScope stage(progress, "emitter views", 1);
+        field.views = renderEmitterViews(scene, s.viewFaceSize, s.viewImageSize);
+        stage.advance(1);
+    }
+    shadow_field::checkViews(field, "light bake");
     if (stats) {
         stats->maps = field.maps();
         stats->coefficients = field.indices.size();

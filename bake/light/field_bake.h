@@ -24,6 +24,8 @@ struct FieldSettings {
     double innerScale = 1.05;              // inner shell radius / emitter radius
     double outerScale = 8.0;               // outer shell radius / emitter radius
     double keptEnergy = 0.9999;            // per map: relative L2 error <= 1%
+    std::uint32_t viewFaceSize = 4;        // the emitter's views (emitter_views.h): 6 x 4 x 4
+    std::uint32_t viewImageSize = 64;      // of 64 x 64 pixels each
     std::uint64_t seed = 1;
 };
 

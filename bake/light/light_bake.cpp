@@ -29,7 +29,8 @@ std::string lightBakeIdentity(const Emitter& emitter, const FieldSettings& s) {
          << "emitter " << emitter.description << '\n'
          << "shells " << s.shells << " inner " << s.innerScale << " outer " << s.outerScale << '\n'
          << "directions " << s.directionFaceSize << " map " << s.mapFaceSize << " rays " << s.raysPerTexelSide << '\n'
-         << "kept energy " << s.keptEnergy << " seed " << s.seed << '\n';
+         << "kept energy " << s.keptEnergy << " seed " << s.seed << '\n'
+         << "views " << s.viewFaceSize << " image " << s.viewImageSize << '\n';
     return text.str();
 }
 
@@ -69,7 +70,8 @@ void writeLightBakeReport(const std::filesystem::path& path, const LightBakeRepo
     j["settings"] = {{"shells", s.shells},         {"directionFaceSize", s.directionFaceSize},
                      {"mapFaceSize", s.mapFaceSize}, {"raysPerTexelSide", s.raysPerTexelSide},
                      {"innerScale", s.innerScale}, {"outerScale", s.outerScale},
-                     {"keptEnergy", s.keptEnergy}, {"seed", s.seed}};
+                     {"keptEnergy", s.keptEnergy}, {"seed", s.seed},
+                     {"viewFaceSize", s.viewFaceSize}, {"viewImageSize", s.viewImageSize}};
     j["field"] = {{"emitterRadiusMm", r.emitterRadius}, {"innerRadiusMm", r.innerRadius},
                   {"outerRadiusMm", r.outerRadius},     {"maps", r.stats.maps},
                   {"coefficients", r.stats.coefficients}, {"rays", r.stats.rays}};

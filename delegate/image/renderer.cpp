@@ -69,7 +69,7 @@ struct FrameContext {
     std::vector<MeshContext> meshes;  // by ray-scene prim number
     std::vector<DomeLookup> domes;    // frame.domes, as the pixel loop looks them up
     std::vector<int> backgroundLevels;  // per dome: its pyramid level for one pixel (-1: not visible)
-    std::vector<EmitterImage> emitters;  // frame.emitters as this camera sees them
+    std::vector<const ShadowFieldLight*> emitters;  // frame.emitters
     double shadowOffset = 0.0;        // kShadowOffset * the scene's extent
     CameraView::PixelRect scene;      // where primary rays may hit (empty: no meshes)
 };
@@ -82,7 +82,7 @@ FrameContext frameContext(const Frame& frame, const CameraView& camera, const Re
     }
     Imath::Box3f bounds;  // what primary rays can meet: the meshes and the emitters
     for (const auto& emitter : frame.emitters) {
-        context.emitters.push_back(emitter->cameraImage(camera.position()));
+        context.emitters.push_back(emitter.get());
         const Imath::V3f centre(emitter->centre()), reach(float(emitter->emitterRadius()));
         bounds.extendBy(Imath::Box3f(centre - reach, centre + reach));
     }
@@ -303,7 +303,7 @@ void shadeEmitters(const FrameContext& context, Block& block) {
         double nearest = hitT;
         for (std::size_t k = 0; k < context.emitters.size(); ++k) {
             double t = 0.0;
-            const Imath::V3f radiance = context.emitters[k].along(o, d, t);
+            const Imath::V3f radiance = context.emitters[k]->emitted(o, d, t);
             const double rayT = t / length;  // in the primary ray's parameter, as hit.t
             if (radiance.x + radiance.y + radiance.z <= 0.0f || !(rayT < hitT)) continue;
             pixel.emission += radiance;

@@ -4,7 +4,7 @@
 //                                                      per-vertex radiance L (no F_t(w_o))
 //   specular   = GGX of every analytic light (shadow rays) + the dome reflection (specular.h)
 //   emission   = the shadow-field lights' emitters the ray passes in front of the hit (or
-//                with no hit), drawn from each one's camera map (shadow_field_light.h):
+//                with no hit), seen through their baked views (shadow_field_light.h):
 //                additive, as a flame is; depth and primId are then the emitter's
 //   color      = subsurface + specular + emission, alpha 1
 // and where nothing is hit, the visible domes + emission (or nothing: opal:transparentBackground).

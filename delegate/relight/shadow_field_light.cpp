@@ -22,8 +22,6 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 // Texels per side of a visibility block: one occlusion ray per lit block.
 constexpr std::uint32_t kBlockSide = 4;
-// The shell the camera's map is taken on: about this many emitter radii out.
-constexpr double kCameraShellRadii = 3.0;
 
 double channelSum(const Imath::V3d& v) { return v.x + v.y + v.z; }
 
@@ -182,43 +180,13 @@ std::vector<LightArrival> ShadowFieldLight::arrivals(const PlacedSamples& sample
     return result;
 }
 
-EmitterImage ShadowFieldLight::cameraImage(const Imath::V3d& eye) const {
+Imath::V3f ShadowFieldLight::emitted(const Imath::V3d& o, const Imath::V3d& d, double& t) const {
     const ShadowField& f = field_->field;
-    const double target = kCameraShellRadii * f.emitterRadius;
-    const auto shell = std::min_element(f.radii.begin(), f.radii.end(), [&](double a, double b) {
-        return std::abs(a - target) < std::abs(b - target);
-    });
-    Imath::V3d toEye = toLight(eye) - f.centre;
-    if (!(toEye.length() > 0.0)) toEye = Imath::V3d(0.0, 0.0, 1.0);
-    const Imath::V3d qLight = f.centre + toEye.normalized() * *shell;
-    EmitterImage image;
-    image.centre = centre_;
-    image.radius = radius_;
-    lightToWorld_.multVecMatrix(qLight, image.q);
-    image.lightFromWorld = rotation_.transposed();
-    image.faceSize = field_->lookup.mapLayout().faceSize();
-    image.radiance = field_->lookup.incidentRadiance(qLight);
-    const Imath::V3f scale(emission_);
-    for (Imath::V3f& l : image.radiance) l *= scale;
-    return image;
-}
-
-Imath::V3f EmitterImage::along(const Imath::V3d& o, const Imath::V3d& d, double& t) const {
-    t = (centre - o).dot(d);
-    const Imath::V3d nearest = o + d * t;
-    if ((nearest - centre).length2() >= radius * radius || t <= 0.0) return Imath::V3f(0.0f);
-    const Imath::V3d w = ((nearest - q) * lightFromWorld).normalized();
-    // Bilinear over the face's texel centres (clamped at its edges): a texel is several
-    // pixels wide where the emitter fills the picture.
-    const CubeFacePoint p = CubeMapLayout::facePoint(Imath::V3f(w));
-    const float last = float(faceSize - 1);
-    const auto texelCoordinate = [&](float c) { return std::clamp((c + 1.0f) * 0.5f * float(faceSize) - 0.5f, 0.0f, last); };
-    const float x = texelCoordinate(p.s), y = texelCoordinate(p.t);
-    const std::uint32_t x0 = std::uint32_t(x), y0 = std::uint32_t(y);
-    const std::uint32_t x1 = std::min(x0 + 1, faceSize - 1), y1 = std::min(y0 + 1, faceSize - 1);
-    const float fx = x - float(x0), fy = y - float(y0);
-    const auto at = [&](std::uint32_t u, std::uint32_t v) { return radiance[(p.face * faceSize + v) * faceSize + u]; };
-    return (at(x0, y0) * (1.0f - fx) + at(x1, y0) * fx) * (1.0f - fy) + (at(x0, y1) * (1.0f - fx) + at(x1, y1) * fx) * fy;
+    const Imath::V3d ol = toLight(o), dl = (d * rotation_.transposed()).normalized();
+    const double tl = (f.centre - ol).dot(dl);
+    t = tl * scale_;
+    if (tl <= 0.0) return Imath::V3f(0.0f);
+    return viewedRadiance(f.views, f.emitterRadius, dl, ol + dl * tl - f.centre) * Imath::V3f(emission_);
 }
 
 }  // namespace opal

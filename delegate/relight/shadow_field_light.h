@@ -22,8 +22,7 @@
 // mu_eff, so it checks the transfer, not this step).
 //
 // For the specular layer the light is the sphere light of the emitter's bounding radius
-// and its mean far-field intensity; for the camera the emitter is drawn from one decoded
-// map (cameraImage).
+// and its mean far-field intensity; the camera sees the emitter through its baked views.
 #pragma once
 
 #include "delegate/hd/scene_delegate.h"
@@ -59,26 +58,6 @@ struct LoadedShadowField {
     LoadedShadowField& operator=(const LoadedShadowField&) = delete;
 };
 
-// The emitter as the camera at `eye` sees it: the field's incident-radiance map at the point
-// q of one shell (radius about 3 emitter radii) on the line from the emitter's centre to the
-// eye. A camera ray passing the centre at offset b (b perpendicular to the ray, |b| < the
-// emitter radius) sees the radiance L_q(w) along w = the direction from q to centre + b:
-// the line through the same point of the emitter, tilted by at most atan(a / r_shell)
-// (documented as the parallax of this approximation).
-struct EmitterImage {
-    Imath::V3d centre;              // world
-    double radius = 0.0;            // world: the emitter's bounding radius
-    Imath::V3d q;                   // world: where the map was taken
-    Imath::M33d lightFromWorld;     // rotation into the light's frame (the map's directions)
-    std::uint32_t faceSize = 0;     // of the map (CubeMapLayout)
-    std::vector<Imath::V3f> radiance;  // per texel, scaled: what the camera sees
-
-    // The radiance along a camera ray (world origin o, unit direction d), 0 when the ray
-    // does not pass within `radius` of the centre; `t` is set to the ray parameter of the
-    // point nearest the centre.
-    Imath::V3f along(const Imath::V3d& o, const Imath::V3d& d, double& t) const;
-};
-
 class ShadowFieldLight {
 public:
     // Throws opal::Error for a desc that is not a shadow-field light, a transform that is not
@@ -95,7 +74,10 @@ public:
 
     // The sphere light the specular layer uses for this light.
     const AnalyticLight& highlight() const { return highlight_; }
-    EmitterImage cameraImage(const Imath::V3d& eye) const;
+    // The emitter's radiance along a camera ray (world origin o, unit direction d; the
+    // baked views, emitter_views.h), 0 when the ray misses its bounding sphere or the field
+    // has no views; `t` is set to the distance along d to the ray's point nearest the centre.
+    Imath::V3f emitted(const Imath::V3d& o, const Imath::V3d& d, double& t) const;
 
     Imath::V3d centre() const { return centre_; }   // world
     double emitterRadius() const { return radius_; }  // world

@@ -15,6 +15,8 @@
 // indices[k] (strictly ascending within a map), with values[3k .. 3k+2] (RGB).
 #pragma once
 
+#include "schema/asset/emitter_views.h"
+
 #include <Imath/ImathVec.h>
 
 #include <cstdint>
@@ -39,6 +41,9 @@ struct ShadowField {
     std::vector<std::uint64_t> offsets;   // maps() + 1 entries
     std::vector<std::uint32_t> indices;   // kept coefficient positions, < mapTexels()
     std::vector<float> values;            // 3 per kept coefficient, RGB
+    // The emitter as a camera sees it (emitter_views.h; chunk VIEW, optional: empty in a
+    // sidecar baked before it existed).
+    EmitterViews views;
 
     std::uint32_t shells() const { return std::uint32_t(radii.size()); }
     std::uint32_t directionsPerShell() const { return 6 * directionFaceSize * directionFaceSize; }

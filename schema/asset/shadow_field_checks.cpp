@@ -77,4 +77,22 @@ void checkMaps(const ShadowField& f, std::string_view context) {
                               " exceeds the largest a map of radiance <= 1e20 has (" + str(bound) + ")");
 }
 
+void checkViewSizes(const EmitterViews& v, std::string_view context) {
+    checkFaceSize(v.directionFaceSize, kMaxViewFaceSize, context, "view direction");
+    checkFaceSize(v.imageSize, kMaxViewImageSize, context, "view image");
+}
+
+void checkViews(const ShadowField& f, std::string_view context) {
+    const EmitterViews& v = f.views;
+    checkViewSizes(v, context);
+    if (v.radiance.size() != v.values())
+        fail(context, std::to_string(v.radiance.size()) + " values, expected 3 x views x image size^2 = " +
+                          std::to_string(v.values()));
+    sidecar::checkFinite(v.radiance, context, "view radiance");
+    for (std::size_t k = 0; k < v.radiance.size(); ++k)
+        if (v.radiance[k] < 0.0f || double(v.radiance[k]) > kMaxRadiance)
+            fail(context, "view radiance " + str(v.radiance[k]) + " at " + std::to_string(k) +
+                              " is outside [0, 1e20]");
+}
+
 }  // namespace opal::shadow_field

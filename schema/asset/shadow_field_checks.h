@@ -21,6 +21,8 @@ inline constexpr double kMaxLength = 1e9;
 // Emitted radiance at most 1e20 (docs/ARCHITECTURE.md#units); an orthonormal Haar
 // coefficient of a map is at most sqrt(texels) times the map's largest value.
 inline constexpr double kMaxRadiance = 1e20;
+inline constexpr std::uint32_t kMaxViewFaceSize = 16;   // 1,536 views
+inline constexpr std::uint32_t kMaxViewImageSize = 256;
 
 // HEAD: name, centre, emitter radius, face sizes, kept energy, shell count.
 void checkHeader(const ShadowField& field, std::string_view context);
@@ -28,5 +30,10 @@ void checkHeader(const ShadowField& field, std::string_view context);
 void checkRadii(const ShadowField& field, std::string_view context);
 // MAPS: offsets, indices, values (sizes, ranges, finiteness, magnitude).
 void checkMaps(const ShadowField& field, std::string_view context);
+// VIEW's face sizes: powers of two up to the limits (before anything is allocated).
+void checkViewSizes(const EmitterViews& views, std::string_view context);
+// VIEW (when present): face sizes powers of two up to the limits, value count, every value
+// finite and in [0, kMaxRadiance].
+void checkViews(const ShadowField& field, std::string_view context);
 
 }  // namespace opal::shadow_field

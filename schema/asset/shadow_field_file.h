@@ -17,6 +17,7 @@ inline constexpr ChunkTag kHeader = "HEAD";
 inline constexpr ChunkTag kRadii = "RADI";
 inline constexpr ChunkTag kMaps = "MAPS";
 inline constexpr ChunkTag kBakeId = "BKID";
+inline constexpr ChunkTag kViews = "VIEW";
 }  // namespace shadow_field_chunk
 
 // Values are stored as binary16 planes (array_codec.h): a writer that must read back what

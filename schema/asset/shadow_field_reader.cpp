@@ -11,7 +11,7 @@ namespace {
 
 using namespace shadow_field_chunk;
 
-constexpr ChunkTag kKnownChunks[] = {kHeader, kRadii, kMaps, kBakeId};
+constexpr ChunkTag kKnownChunks[] = {kHeader, kRadii, kMaps, kBakeId, kViews};
 
 void readHeader(ChunkSource src, ShadowField& f) {
     f.name = src.readString(sidecar::kMaxNameBytes, "light name");
@@ -45,6 +45,16 @@ void readMaps(ChunkSource src, ShadowField& f) {
     shadow_field::checkMaps(f, src.context());
 }
 
+void readViews(ChunkSource src, ShadowField& f) {
+    EmitterViews& v = f.views;
+    v.directionFaceSize = src.readU32();
+    v.imageSize = src.readU32();
+    shadow_field::checkViewSizes(v, src.context());  // before the values are allocated
+    v.radiance = readHalfPlanes(src, v.values(), "view radiance");
+    src.finish();
+    shadow_field::checkViews(f, src.context());
+}
+
 std::uint64_t readBakeId(ChunkSource src) {
     const std::uint64_t id = src.readU64();
     src.finish();
@@ -60,6 +70,7 @@ ShadowField readShadowFieldFile(const std::filesystem::path& path) {
     readHeader(file.open(kHeader), f);
     readRadii(file.open(kRadii), f);
     readMaps(file.open(kMaps), f);
+    if (file.find(kViews)) readViews(file.open(kViews), f);
     if (file.find(kBakeId)) f.bakeId = readBakeId(file.open(kBakeId));
     return f;
 }

@@ -31,17 +31,26 @@ void writeMaps(ChunkSink& sink, const ShadowField& f) {
     writeHalfPlanes(sink, f.values);
 }
 
+void writeViews(ChunkSink& sink, const EmitterViews& v) {
+    sink.writeU32(v.directionFaceSize);
+    sink.writeU32(v.imageSize);
+    writeHalfPlanes(sink, v.radiance);
+}
+
 }  // namespace
 
 void writeShadowFieldFile(const std::filesystem::path& path, const ShadowField& f) {
     shadow_field::checkHeader(f, writeContext(path, kHeader));
     shadow_field::checkRadii(f, writeContext(path, kRadii));
     shadow_field::checkMaps(f, writeContext(path, kMaps));
+    if (!f.views.empty()) shadow_field::checkViews(f, writeContext(path, kViews));
     std::vector<ChunkProducer> chunks = {
         {kHeader, ChunkCodec::Raw, true, [&](ChunkSink& s) { writeHeader(s, f); }},
         {kRadii, ChunkCodec::Raw, true, [&](ChunkSink& s) { s.writeArray<double>(f.radii); }},
         {kMaps, ChunkCodec::Zstd, true, [&](ChunkSink& s) { writeMaps(s, f); }},
     };
+    if (!f.views.empty())
+        chunks.push_back({kViews, ChunkCodec::Zstd, false, [&](ChunkSink& s) { writeViews(s, f.views); }});
     if (f.bakeId) chunks.push_back({kBakeId, ChunkCodec::Raw, false, [&](ChunkSink& s) { s.writeU64(*f.bakeId); }});
     writeChunkedFile(path, kShadowFieldKind, chunks);
 }

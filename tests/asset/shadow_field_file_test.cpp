@@ -36,6 +36,9 @@ void expectSame(const ShadowField& a, const ShadowField& b) {
     EXPECT_EQ(a.offsets, b.offsets);
     EXPECT_EQ(a.indices, b.indices);
     EXPECT_EQ(bits(a.values), bits(b.values));
+    EXPECT_EQ(a.views.directionFaceSize, b.views.directionFaceSize);
+    EXPECT_EQ(a.views.imageSize, b.views.imageSize);
+    EXPECT_EQ(bits(a.views.radiance), bits(b.views.radiance));
 }
 
 // Writes a container of kind SFLD with the given chunks as they are (no field checks), so
@@ -72,6 +75,27 @@ TEST(ShadowFieldFile, TwoWritesAreByteIdentical) {
     writeShadowFieldFile(dir / "a.opal", field);
     writeShadowFieldFile(dir / "b.opal", field);
     EXPECT_EQ(test::readBytes(dir / "a.opal"), test::readBytes(dir / "b.opal"));
+}
+
+TEST(ShadowFieldFile, ViewsAreOptionalAndChecked) {
+    TempDir dir;
+    ShadowField f = test::irregularShadowField();
+    ASSERT_FALSE(f.views.empty());
+    f.views = {};
+    writeShadowFieldFile(dir / "plain.opal", f);
+    EXPECT_TRUE(readShadowFieldFile(dir / "plain.opal").views.empty());
+    ChunkedFileReader plain(dir / "plain.opal", kShadowFieldKind);
+    EXPECT_EQ(plain.find(kViews), nullptr);
+
+    f = test::irregularShadowField();
+    f.views.radiance[5] = -1.0f;  // radiance is never negative
+    expectContains(errorOf([&] { writeShadowFieldFile(dir / "bad.opal", f); }),
+                   {"bad.opal", "chunk 'VIEW'", "view radiance -1 at 5"});
+    f = test::irregularShadowField();
+    f.views.imageSize = 3;
+    expectContains(errorOf([&] { writeShadowFieldFile(dir / "bad.opal", f); }),
+                   {"bad.opal", "chunk 'VIEW'", "view image face size 3"});
+    EXPECT_FALSE(std::filesystem::exists(dir / "bad.opal"));
 }
 
 TEST(ShadowFieldFile, AnAssetSidecarIsNotALightSidecar) {

@@ -51,6 +51,12 @@ inline ShadowField irregularShadowField() {
         f.offsets.push_back(f.indices.size());
     }
     roundToHalfPlanes(f.values);
+    // Views: 6 x 1 x 1 directions of 4 x 4 pixels, values of many magnitudes.
+    f.views.directionFaceSize = 1;
+    f.views.imageSize = 4;
+    for (std::uint64_t k = 0; k < f.views.values(); ++k)
+        f.views.radiance.push_back(float(std::abs(std::sin(double(k) * 1.7)) * std::pow(10.0, double(int(k % 7) - 3))));
+    roundToHalfPlanes(f.views.radiance);
     return f;
 }
 
