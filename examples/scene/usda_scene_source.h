@@ -15,6 +15,9 @@ public:
     explicit UsdaSceneSource(Scene scene) : scene_(std::move(scene)) {}
 
     const Scene& scene() const { return scene_; }
+    // A host that edits the scene (a viewer) hands the edited copy over before a sync, from
+    // the thread that syncs, and marks what changed dirty. Prims keep their paths.
+    void setScene(Scene scene) { scene_ = std::move(scene); }
 
     // Inserts every material and camera and light (Sprims), then every mesh (Rprims).
     // A prim the index refuses (a type the delegate does not support, e.g. a shadow-field
