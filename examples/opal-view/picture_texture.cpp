@@ -82,7 +82,7 @@ void PictureTexture::upload(const Image& displayReferred) {
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     const int w = displayReferred.width(), h = displayReferred.height();
     if (w != width_ || h != height_)
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB8, w, h, 0, GL_RGB, GL_FLOAT, displayReferred.pixels().data());
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB32F, w, h, 0, GL_RGB, GL_FLOAT, displayReferred.pixels().data());
     else
         glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, w, h, GL_RGB, GL_FLOAT, displayReferred.pixels().data());
     width_ = w;

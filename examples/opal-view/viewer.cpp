@@ -21,9 +21,10 @@ namespace opal::view {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-// While the picture is still refining, a new pass is shown at least this often even when
-// the delegate's pass counter did not move (a restart may reuse a count).
-constexpr auto RefineInterval = std::chrono::milliseconds(100);
+// While the picture is still refining, a new pass is converted at most this often (the
+// conversion competes with the renderer for the CPU), except the first pass of a new
+// edit, which is converted as soon as the converter is free.
+constexpr auto RefineInterval = std::chrono::milliseconds(500);
 constexpr float PanelWidth = 300.0f;
 
 bool opensGivenScene(const ViewOptions& options, const std::vector<ScriptAction>& script) {
@@ -37,8 +38,10 @@ Viewer::Viewer(const ViewOptions& options, std::vector<ScriptAction> script)
       window_(options.width, options.height, "opal-view"),
       imgui_(window_),
       display_(ColorConfig::fromEnvironment()),
-      model_(*renderer_.delegate, window_.framebufferSize().first, window_.framebufferSize().second) {
+      model_(*renderer_.delegate, window_.framebufferSize().first, window_.framebufferSize().second),
+      converter_(display_.config()) {
     const bool openScene = opensGivenScene(options, script);
+    model_.setRenderedAovs({"color"});
     if (!script.empty()) script_.emplace(std::move(script));
     if (openScene) open(options.scene ? *options.scene : defaultScene(executablePath()));
     lastFrame_ = Clock::now();
@@ -49,11 +52,13 @@ void Viewer::run() {
 }
 
 void Viewer::open(const std::filesystem::path& file) {
+    converter_.drain();  // it may be reading the open session's buffer
+    converter_.take();
     model_.open(file);
     for (const std::string& warning : model_.takeLoadWarnings()) std::cerr << "opal-view: warning: " << warning << '\n';
     window_.setTitle("opal-view - " + file.string());
-    shown_ = {};
-    shownSettled_ = false;
+    requested_ = shown_ = {};
+    shownApplied_ = 0;
 }
 
 void Viewer::frame() {
@@ -67,7 +72,15 @@ void Viewer::frame() {
     if (model_.isOpen()) drawInterface();
     collectMessages();
     if (script_ && script_->step(*this)) script_.reset();
-    model_.update();
+    // What is shown (color's alpha travels with it), or everything while an EXR waits.
+    if (everyAov_) model_.setRenderedAovs({});
+    else model_.setRenderedAovs(settings_.aov == "color" ? std::vector<std::string>{"color"}
+                                                         : std::vector<std::string>{"color", settings_.aov});
+    const int submitted = model_.update();
+    if (measure_) {
+        measure_->frame();
+        if (submitted > 0) measure_->edited(submitted, Clock::now());
+    }
     refreshPicture();
     glViewport(0, 0, width, height);
     picture_.draw();
@@ -101,28 +114,69 @@ void Viewer::collectMessages() {
     }
 }
 
-Viewer::PictureKey Viewer::pictureKey() const {
+namespace {
+
+bool sameFrame(const PictureTag& a, const PictureTag& b) {
+    return a.passes == b.passes && a.syncs == b.syncs && a.settings == b.settings;
+}
+
+}  // namespace
+
+PictureTag Viewer::currentTag() const {
     const auto stats = model_.session().delegate().renderStats();
     const auto passes = stats.find("passes");
     const int* count = passes == stats.end() ? nullptr : std::get_if<int>(&passes->second);
-    return {count ? *count : 0, model_.session().status().syncs, settings_.version};
+    PictureTag tag;
+    tag.passes = count ? *count : 0;
+    tag.syncs = model_.session().status().syncs;
+    tag.settings = settings_.version;
+    return tag;
 }
 
 void Viewer::refreshPicture() {
     if (!model_.isOpen()) return;
-    // Both read before the buffer is: a settled session writes nothing more into it.
+    showConverted();
+    // Read before the buffer is: a settled session writes nothing more into it, and a
+    // sync's restart has reset the pass count by the time its status is published.
     const bool settled = model_.settled();
-    const PictureKey key = pictureKey();
+    const int applied = model_.session().status().applied;
+    PictureTag tag = currentTag();
+    tag.applied = applied;
+    tag.settled = settled;
     const Clock::time_point now = Clock::now();
-    if (key == shown_ && (settled ? shownSettled_ : now - lastPicture_ < RefineInterval)) return;
-    const Image linear = mappedImage(model_.session().buffer(settings_.aov));
-    picture_.upload(display_.toDisplay(linear, settings_.aov, settings_.exposure));
-    shown_ = key;
-    shownSettled_ = settled;
+    const bool newEdit = tag.passes >= 1 && tag.applied > requested_.applied;
+    const bool due = settled ? !(sameFrame(tag, requested_) && requested_.settled)
+                             : newEdit || (!sameFrame(tag, requested_) && now - lastPicture_ >= RefineInterval);
+    if (!due) return;
+    PictureRequest request{&model_.session().buffer(settings_.aov), settings_.aov, display_.display(), display_.view(),
+                           settings_.exposure, tag, !settled};
+    if (!converter_.request(std::move(request))) return;
+    requested_ = tag;
     lastPicture_ = now;
 }
 
-bool Viewer::pictureSettled() { return model_.settled() && shownSettled_ && pictureKey() == shown_; }
+void Viewer::showConverted() {
+    std::optional<ConvertedPicture> done = converter_.take();
+    if (!done) return;
+    if (!done->error.empty()) hud_.message = "error: " + done->error;
+    else if (!done->image.empty()) picture_.upload(done->image);
+    shown_ = done->tag;
+    // A pass of the frame the newest sync started: the picture shows that edit.
+    if (shown_.passes >= 1 && shown_.applied > shownApplied_) {
+        shownApplied_ = shown_.applied;
+        if (measure_) measure_->shown(shownApplied_, Clock::now());
+    }
+}
+
+bool Viewer::pictureSettled() { return model_.settled() && shown_.settled && sameFrame(currentTag(), shown_); }
+
+void Viewer::beginMeasure() { measure_.emplace(Clock::now()); }
+
+std::string Viewer::endMeasure() {
+    const std::string summary = measure_ ? measure_->summary(Clock::now()) : "";
+    measure_.reset();
+    return summary;
+}
 
 std::string Viewer::takeRenderError() {
     std::string error;
@@ -154,6 +208,11 @@ void Viewer::requestScreenshot(const std::filesystem::path& file) {
     screenshot_ = file;
 }
 
+void Viewer::renderEveryAov() {
+    everyAov_ = true;
+    model_.setRenderedAovs({});  // now, so that the model is not settled until they are rendered
+}
+
 void Viewer::saveExr(const std::filesystem::path& file) {
     std::vector<std::string> warnings;
     const ColorSpaceIdentity space = display_.config().workingSpaceIdentity(&warnings);
@@ -164,6 +223,7 @@ void Viewer::saveExr(const std::filesystem::path& file) {
     writeExr(file, model_.session().buffers().exrLayers(), space, metadata, ExrOptions{}, &warnings);
     for (const std::string& warning : warnings) std::cerr << "opal-view: warning: " << warning << '\n';
     std::cout << "opal-view: wrote " << file.string() << std::endl;
+    everyAov_ = false;
 }
 
 }  // namespace opal::view

@@ -5,6 +5,8 @@
 #pragma once
 
 #include "examples/opal-view/core/display_picture.h"
+#include "examples/opal-view/core/edit_latency.h"
+#include "examples/opal-view/core/picture_converter.h"
 #include "examples/opal-view/core/renderer_loader.h"
 #include "examples/opal-view/core/script_runner.h"
 #include "examples/opal-view/core/viewer_model.h"
@@ -37,35 +39,38 @@ public:
     bool pictureSettled() override;
     std::string takeRenderError() override;
     void requestScreenshot(const std::filesystem::path& file) override;
+    void renderEveryAov() override;
     void saveExr(const std::filesystem::path& file) override;
     void quit() override { quit_ = true; }
+    void beginMeasure() override;
+    std::string endMeasure() override;
 
 private:
-    // What the shown picture was made from; a new one is made when this changes.
-    struct PictureKey {
-        int passes = -1, syncs = -1, settings = -1;
-        friend bool operator==(const PictureKey&, const PictureKey&) = default;
-    };
     void frame();
     void drawInterface();
     void collectMessages();
     void refreshPicture();
-    PictureKey pictureKey() const;
+    void showConverted();
+    // The frame the buffers hold now (passes, syncs, display settings).
+    PictureTag currentTag() const;
 
     LoadedRenderer renderer_;  // first: outlives the session that renders with it
     Window window_;
     ImGuiLayer imgui_;
     PictureTexture picture_;
-    DisplayPicture display_;
+    DisplayPicture display_;  // the display and view chosen (the converter has its own)
     DisplaySettings settings_;
     std::optional<ScriptRunner> script_;
     std::optional<std::filesystem::path> screenshot_;
     HudFigures hud_;
     std::string renderError_;
-    PictureKey shown_;
-    bool shownSettled_ = false, quit_ = false;
+    PictureTag requested_, shown_;
+    int shownApplied_ = 0;                 // the newest submission a shown picture holds
+    std::optional<EditLatency> measure_;   // while a script's drag runs
+    bool quit_ = false, everyAov_ = false;
     std::chrono::steady_clock::time_point lastPicture_, lastFrame_;
-    ViewerModel model_;  // last: its render session goes before everything above
+    ViewerModel model_;  // its render session goes before everything above
+    PictureConverter converter_;  // last: stops reading the session's buffers first
 };
 
 }  // namespace opal::view

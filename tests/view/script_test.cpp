@@ -31,11 +31,12 @@ exposure -1.5
 aov subsurface
 camera orbit 10 -5
 wait 20
+drag light /World/Key 5
 screenshot out.png
 save exr out.exr
 quit
 )", "look.script");
-    ASSERT_EQ(actions.size(), 14u);
+    ASSERT_EQ(actions.size(), 15u);
     EXPECT_EQ(actions[0].kind, ActionKind::Load);
     EXPECT_EQ(actions[0].words, std::vector<std::string>{"my scene.usda"});
     EXPECT_EQ(actions[0].where, "look.script:3");
@@ -50,9 +51,12 @@ quit
     EXPECT_EQ(actions[7].numbers, std::vector<double>{-1.5});
     EXPECT_EQ(actions[9].kind, ActionKind::CameraOrbit);
     EXPECT_EQ(actions[10].numbers, std::vector<double>{20.0});
-    EXPECT_EQ(actions[12].kind, ActionKind::SaveExr);
-    EXPECT_EQ(actions[12].where, "look.script:15");
-    EXPECT_EQ(actions[13].kind, ActionKind::Quit);
+    EXPECT_EQ(actions[11].kind, ActionKind::Drag);
+    EXPECT_EQ(actions[11].words, (std::vector<std::string>{"light", "/World/Key"}));
+    EXPECT_EQ(actions[11].numbers, std::vector<double>{5.0});
+    EXPECT_EQ(actions[13].kind, ActionKind::SaveExr);
+    EXPECT_EQ(actions[13].where, "look.script:16");
+    EXPECT_EQ(actions[14].kind, ActionKind::Quit);
 }
 
 TEST(Script, AnUnknownActionFailsWithItsLineAndTheActions) {

@@ -2,7 +2,9 @@
 
 #include "schema/error.h"
 
+#include <algorithm>
 #include <chrono>
+#include <variant>
 
 namespace opal::view {
 namespace {
@@ -38,15 +40,18 @@ RenderSession::~RenderSession() {
     worker_.join();
 }
 
-void RenderSession::submit(const scene::Scene& scene, const DirtyPrims& changes, const Viewport& viewport) {
+int RenderSession::submit(const scene::Scene& scene, const DirtyPrims& changes, const Viewport& viewport) {
+    int number = 0;
     {
         std::lock_guard lock(mutex_);
         if (!pending_) pending_ = Update{};
         pending_->scene = scene;
         pending_->viewport = viewport;
+        pending_->number = number = ++submissions_;
         for (const auto& [path, bits] : changes) pending_->dirty[path] |= bits;
     }
     wake_.notify_all();
+    return number;
 }
 
 bool RenderSession::settled() const {
@@ -55,6 +60,17 @@ bool RenderSession::settled() const {
         if (pending_ || running_) return false;
     }
     return pass_->isConverged();
+}
+
+bool RenderSession::firstPassDone() const {
+    {
+        std::lock_guard lock(mutex_);
+        if (pending_ || running_ || status_.applied != submissions_) return false;
+    }
+    const auto stats = delegate_.renderStats();
+    const auto passes = stats.find("passes");
+    const int* done = passes == stats.end() ? nullptr : std::get_if<int>(&passes->second);
+    return done && *done >= 1;
 }
 
 SessionStatus RenderSession::status() const {
@@ -80,6 +96,13 @@ const hd::RenderBuffer& RenderSession::buffer(const std::string& aov) const {
     throw Error("the viewer binds no AOV '" + aov + "'");
 }
 
+std::vector<hd::AovBinding> RenderSession::bindings(const std::vector<std::string>& aovs) const {
+    std::vector<hd::AovBinding> bound;
+    for (const hd::AovBinding& binding : buffers_.bindings())
+        if (aovs.empty() || std::find(aovs.begin(), aovs.end(), binding.aov) != aovs.end()) bound.push_back(binding);
+    return bound;
+}
+
 void RenderSession::work() {
     for (;;) {
         std::unique_lock lock(mutex_);
@@ -96,6 +119,7 @@ void RenderSession::work() {
 }
 
 void RenderSession::syncAndExecute(Update update) {
+    const int number = update.number;
     const auto start = std::chrono::steady_clock::now();
     std::vector<std::string> messages;
     try {
@@ -103,7 +127,7 @@ void RenderSession::syncAndExecute(Update update) {
         for (const auto& [path, bits] : update.dirty) index_.changeTracker().markDirty(path, bits);
         index_.sync();
         hd::RenderPassState state{update.viewport.camera, update.viewport.width, update.viewport.height};
-        pass_->execute(state, buffers_.bindings());
+        pass_->execute(state, bindings(update.viewport.aovs));
     } catch (const std::exception& e) {
         messages.push_back("error: " + std::string(e.what()));
     }
@@ -111,6 +135,7 @@ void RenderSession::syncAndExecute(Update update) {
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     std::lock_guard lock(mutex_);
     status_.lastSyncMs = ms;
+    status_.applied = number;
     ++status_.syncs;
     messages_.insert(messages_.end(), messages.begin(), messages.end());
 }

@@ -22,15 +22,19 @@
 
 namespace opal::view {
 
+// What the render pass is asked for: the camera, the size, and the AOVs it renders (a
+// pass writes only these, so the viewer binds what it shows; empty: every AOV).
 struct Viewport {
     hd::SdfPath camera;
     int width = 640, height = 480;
+    std::vector<std::string> aovs;
     friend bool operator==(const Viewport&, const Viewport&) = default;
 };
 
 struct SessionStatus {
     double lastSyncMs = 0.0;  // the last sync (relighting included), wall clock
     int syncs = 0;            // syncs done, the first (every prim) included
+    int applied = 0;          // the newest submission (submit's number) the last sync took in
     bool busy = false;        // a sync is pending or running
 };
 
@@ -44,9 +48,16 @@ public:
     RenderSession& operator=(const RenderSession&) = delete;
 
     // The interface's scene after its edits, the prims they dirtied, and the viewport.
-    void submit(const scene::Scene& scene, const DirtyPrims& changes, const Viewport& viewport);
+    // Returns the submission's number (1, 2, ...; the first sync's is 0): once
+    // status().applied reaches it, the delegate's frame shows it.
+    int submit(const scene::Scene& scene, const DirtyPrims& changes, const Viewport& viewport);
     // Nothing pending or running on the worker, and every bound buffer holds its final values.
     bool settled() const;
+    // The newest submission is synced and its frame has finished a pass. A host that submits
+    // only then never restarts a frame before its first pass, so a dragged control keeps
+    // producing pictures (every submission would otherwise restart the frame before any
+    // pass of it is done).
+    bool firstPassDone() const;
     SessionStatus status() const;
     // Errors of syncs and of the render thread, and the delegate's warnings, since the last
     // call, each prefixed "error: " or "warning: ".
@@ -61,9 +72,11 @@ private:
         scene::Scene scene;
         DirtyPrims dirty;
         Viewport viewport;
+        int number = 0;
     };
     void work();
     void syncAndExecute(Update update);
+    std::vector<hd::AovBinding> bindings(const std::vector<std::string>& aovs) const;
 
     hd::RenderDelegate& delegate_;
     scene::UsdaSceneSource source_;
@@ -75,6 +88,7 @@ private:
     std::condition_variable wake_;
     std::optional<Update> pending_;
     bool running_ = false, quit_ = false;
+    int submissions_ = 0;
     SessionStatus status_;
     std::vector<std::string> messages_;
     std::thread worker_;  // last: starts once everything it uses exists

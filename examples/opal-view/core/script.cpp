@@ -37,6 +37,8 @@ constexpr ActionForm Forms[] = {
     {"camera orbit N N", ActionKind::CameraOrbit},
     {"wait", ActionKind::Wait},
     {"wait N", ActionKind::Wait},
+    {"drag =material N", ActionKind::Drag},
+    {"drag =light W N", ActionKind::Drag},
     {"screenshot W", ActionKind::Screenshot},
     {"save exr W", ActionKind::SaveExr},
     {"quit", ActionKind::Quit},

@@ -15,6 +15,10 @@
 //   camera frame|reset
 //   camera orbit YAW PITCH             degrees, added to the camera's
 //   wait [SECONDS]                     until the picture converged (default 300 s)
+//   drag material SECONDS              a person dragging the sigma_a green slider back and
+//                                      forth (2 s a sweep), then letting go; prints what the
+//                                      interface showed meanwhile (edit_latency.h)
+//   drag light PATH SECONDS            the same, circling the light about the object (4 s a turn)
 //   screenshot OUT.png                 the window's pixels, interface included
 //   save exr OUT.exr                   every AOV, scene-linear (waits for convergence)
 //   quit
@@ -28,7 +32,7 @@ namespace opal::view {
 
 enum class ActionKind {
     Load, MaterialSet, MaterialReset, LightMove, LightSet, View, Exposure, Aov,
-    CameraFrame, CameraReset, CameraOrbit, Wait, Screenshot, SaveExr, Quit
+    CameraFrame, CameraReset, CameraOrbit, Wait, Drag, Screenshot, SaveExr, Quit
 };
 
 struct ScriptAction {

@@ -1,8 +1,12 @@
 #include "examples/opal-view/core/script_runner.h"
 
+#include "examples/opal-view/core/edited_scene.h"
 #include "schema/error.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
 
 namespace opal::view {
 namespace {
@@ -33,7 +37,52 @@ void runCamera(const ScriptAction& action, ViewerModel& model) {
     model.camera.pitch = std::clamp(model.camera.pitch + action.numbers[1], -89.0, 89.0);
 }
 
+// The sigma_a green slider swept log-uniformly over the asset's range, 2 s a sweep.
+void dragMaterial(ViewerModel& model, double seconds) {
+    const EditableRange& range = model.selectedAsset().range;
+    const double phase = 0.5 + 0.5 * std::sin(std::numbers::pi * seconds);
+    hd::MaterialDesc material = model.selectedMaterial();
+    material.subsurface.sigmaA[1] = range.sigmaAMin * std::pow(range.sigmaAMax / range.sigmaAMin, phase);
+    model.setSelectedMaterial(material);
+}
+
+// The light swept around the object's centre on its sphere: a quarter turn a second about
+// +Y, and tipped by up to 30 degrees about +X (so a light straight above moves too).
+void dragLight(ViewerModel& model, const hd::SdfPath& path, const Imath::V3d& home, double seconds) {
+    const Imath::V3d center = model.bounds().center;
+    Imath::M44d turn;
+    turn.rotate(Imath::V3d(std::numbers::pi / 6.0 * std::sin(std::numbers::pi * seconds), 0.5 * std::numbers::pi * seconds, 0.0));
+    Imath::V3d offset;
+    turn.multDirMatrix(home - center, offset);
+    model.moveLight(path, center + offset);
+}
+
 }  // namespace
+
+bool ScriptRunner::drag(const ScriptAction& action, ScriptHost& host) {
+    using Clock = std::chrono::steady_clock;
+    const bool light = action.words[0] == "light";
+    if (!dragging_) {
+        dragging_ = true;
+        dragStart_ = Clock::now();
+        if (light) dragHome_ = lightPosition(host.model().light(action.words[1]));
+        host.beginMeasure();
+    }
+    const double seconds = std::chrono::duration<double>(Clock::now() - dragStart_).count();
+    if (seconds < action.numbers.back()) {
+        if (light) dragLight(host.model(), action.words[1], dragHome_, seconds);
+        else dragMaterial(host.model(), seconds);
+        lastEdit_ = Clock::now();
+        return false;
+    }
+    if (!waitForPicture(action, host, DefaultWaitSeconds)) return false;
+    const double settle = std::chrono::duration<double, std::milli>(Clock::now() - lastEdit_).count();
+    std::printf("opal-view: %s drag %s: %s; converged %.0f ms after the last edit\n", action.where.c_str(),
+                action.words[0].c_str(), host.endMeasure().c_str(), settle);
+    std::fflush(stdout);
+    dragging_ = false;
+    return true;
+}
 
 bool ScriptRunner::step(ScriptHost& host) {
     while (next_ < actions_.size()) {
@@ -61,7 +110,7 @@ bool ScriptRunner::waitForPicture(const ScriptAction& action, ScriptHost& host, 
     }
     const double waited = std::chrono::duration<double>(std::chrono::steady_clock::now() - waitStart_).count();
     if (waited > seconds)
-        throw Error(std::string(action.kind == ActionKind::Wait ? "wait" : "save exr") +
+        throw Error(std::string(action.kind == ActionKind::Wait ? "wait" : action.kind == ActionKind::Drag ? "drag" : "save exr") +
                     ": the picture did not converge within " + std::to_string(int(seconds)) + " s");
     return false;
 }
@@ -82,8 +131,10 @@ bool ScriptRunner::run(const ScriptAction& action, ScriptHost& host) {
     case ActionKind::CameraOrbit: runCamera(action, model); return true;
     case ActionKind::Wait:
         return waitForPicture(action, host, action.numbers.empty() ? DefaultWaitSeconds : action.numbers[0]);
+    case ActionKind::Drag: return drag(action, host);
     case ActionKind::Screenshot: host.requestScreenshot(action.words[0]); return true;
     case ActionKind::SaveExr:
+        if (!waiting_) host.renderEveryAov();
         if (!waitForPicture(action, host, DefaultWaitSeconds)) return false;
         host.saveExr(action.words[0]);
         return true;

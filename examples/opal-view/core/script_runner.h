@@ -29,7 +29,12 @@ public:
     virtual std::string takeRenderError() = 0;
     // The window's pixels at the end of this frame, interface included.
     virtual void requestScreenshot(const std::filesystem::path& file) = 0;
+    // The renderer writes every AOV until the next saveExr (which needs them all).
+    virtual void renderEveryAov() = 0;
     virtual void saveExr(const std::filesystem::path& file) = 0;
+    // Starts measuring what the interface shows (edit_latency.h); end returns the summary.
+    virtual void beginMeasure() = 0;
+    virtual std::string endMeasure() = 0;
     virtual void quit() = 0;
 };
 
@@ -45,11 +50,15 @@ private:
     // Whether the action is done (false: call again next frame).
     bool run(const ScriptAction& action, ScriptHost& host);
     bool waitForPicture(const ScriptAction& action, ScriptHost& host, double seconds);
+    bool drag(const ScriptAction& action, ScriptHost& host);
 
     std::vector<ScriptAction> actions_;
     std::size_t next_ = 0;
     bool waiting_ = false;
     std::chrono::steady_clock::time_point waitStart_;
+    bool dragging_ = false;
+    std::chrono::steady_clock::time_point dragStart_, lastEdit_;
+    Imath::V3d dragHome_;  // the light's position when the drag began
 };
 
 }  // namespace opal::view

@@ -102,13 +102,14 @@ void ViewerModel::setViewport(int width, int height) {
     viewport_.height = std::max(height, 1);
 }
 
-void ViewerModel::update() {
-    if (!session_) return;
+int ViewerModel::update() {
+    if (!session_) return 0;
     const hd::CameraDesc desc = cameraDesc(camera, viewport_.width, viewport_.height, bounds_);
     if (!sameCamera(desc, scene().cameras.at(ViewCameraPath).desc)) edited_->setCamera(ViewCameraPath, desc);
-    if (!edited_->changed() && viewport_ == submitted_) return;
-    session_->submit(scene(), edited_->takeChanges(), viewport_);
+    if (!edited_->changed() && viewport_ == submitted_) return 0;
+    if (!session_->firstPassDone()) return 0;  // the edits wait, merged, for the next frame
     submitted_ = viewport_;
+    return session_->submit(scene(), edited_->takeChanges(), viewport_);
 }
 
 bool ViewerModel::settled() const { return session_ && !edited_->changed() && viewport_ == submitted_ && session_->settled(); }

@@ -53,12 +53,16 @@ public:
     void frameAll();
     void resetCamera();
     void setViewport(int width, int height);
+    // The AOVs the renderer writes (empty: every one); the others keep what they last held.
+    void setRenderedAovs(std::vector<std::string> aovs) { viewport_.aovs = std::move(aovs); }
     int width() const { return viewport_.width; }
     int height() const { return viewport_.height; }
     double aspect() const { return double(viewport_.width) / viewport_.height; }
 
-    // Once per interface frame: the camera and every edit since go to the session.
-    void update();
+    // Once per interface frame: the camera and every edit since go to the session, once
+    // the frame of the last submission finished a pass (RenderSession::firstPassDone).
+    // Returns the submission's number (RenderSession::submit), 0 when nothing went.
+    int update();
     RenderSession& session() const { return *session_; }
     // Edits submitted and the session settled (converged on the latest scene).
     bool settled() const;
