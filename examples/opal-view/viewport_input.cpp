@@ -1,7 +1,7 @@
 #include "examples/opal-view/viewport_input.h"
 
 #include "examples/opal-view/core/edited_scene.h"
-#include "examples/opal-view/core/light_drag.h"
+#include "examples/opal-view/core/pointer_gestures.h"
 
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -9,26 +9,28 @@
 namespace opal::view {
 namespace {
 
-constexpr double DollyPixelsPerStep = 20.0;
-
-void moveCamera(ViewerModel& model, const ImGuiIO& io) {
-    const double dx = io.MouseDelta.x, dy = io.MouseDelta.y;
-    if (io.MouseDown[ImGuiMouseButton_Left]) tumble(model.camera, dx, dy);
-    else if (io.MouseDown[ImGuiMouseButton_Middle]) track(model.camera, dx, dy, int(io.DisplaySize.y), model.aspect());
-    else if (io.MouseDown[ImGuiMouseButton_Right]) dolly(model.camera, (dx - dy) / DollyPixelsPerStep);
+Pointer pointerOf(const ImGuiIO& io) {
+    Pointer pointer;
+    pointer.x = io.MousePos.x;
+    pointer.y = io.MousePos.y;
+    pointer.dx = io.MouseDelta.x;
+    pointer.dy = io.MouseDelta.y;
+    pointer.wheel = io.MouseWheel;
+    pointer.left = io.MouseDown[ImGuiMouseButton_Left];
+    pointer.middle = io.MouseDown[ImGuiMouseButton_Middle];
+    pointer.right = io.MouseDown[ImGuiMouseButton_Right];
+    pointer.alt = io.KeyAlt;
+    pointer.width = io.DisplaySize.x;
+    pointer.height = io.DisplaySize.y;
+    return pointer;
 }
 
-void dragLight(ViewerModel& model, const ImGuiIO& io) {
-    if (!model.selectedLight || !io.MouseDown[ImGuiMouseButton_Left]) return;
-    if (io.MouseDelta.x == 0.0f && io.MouseDelta.y == 0.0f) return;
+void dragSelectedLight(ViewerModel& model, const Pointer& pointer) {
+    if (!model.selectedLight) return;
     const hd::LightDesc& light = model.light(*model.selectedLight);
-    if (light.kind != hd::LightKind::Sphere) return;
-    const double ndcX = 2.0 * io.MousePos.x / io.DisplaySize.x - 1.0;
-    const double ndcY = 1.0 - 2.0 * io.MousePos.y / io.DisplaySize.y;
-    const Imath::V3d center = model.bounds().center;
-    const double radius = (lightPosition(light) - center).length();
-    const Imath::V3d ray = viewRay(model.camera, model.aspect(), ndcX, ndcY);
-    model.moveLight(*model.selectedLight, pointOnSphere(eyePosition(model.camera), ray, center, radius));
+    if (light.kind != hd::LightKind::Sphere) return;  // point, sphere and spot lights
+    if (const auto position = lightGesture(model.camera, pointer, lightPosition(light), model.bounds().center))
+        model.moveLight(*model.selectedLight, *position);
 }
 
 }  // namespace
@@ -40,9 +42,9 @@ void handleViewportInput(ViewerModel& model) {
         if (ImGui::IsKeyPressed(GLFW_KEY_R, false)) model.resetCamera();
     }
     if (io.WantCaptureMouse || io.DisplaySize.x <= 0.0f || io.DisplaySize.y <= 0.0f) return;
-    if (io.MouseWheel != 0.0f) dolly(model.camera, io.MouseWheel);
-    if (io.KeyAlt) moveCamera(model, io);
-    else dragLight(model, io);
+    const Pointer pointer = pointerOf(io);
+    cameraGesture(model.camera, pointer);
+    dragSelectedLight(model, pointer);
 }
 
 }  // namespace opal::view

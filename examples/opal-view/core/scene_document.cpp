@@ -76,7 +76,9 @@ std::optional<hd::SdfPath> chooseSceneCamera(const scene::Scene& scene) {
 
 bool isAssetLayer(const std::filesystem::path& file) {
     const usda::Layer layer = usda::readUsdaFile(file);
-    const usda::Prim* prim = layer.defaultPrim().empty() ? nullptr : layer.findPrim("/" + layer.defaultPrim());
+    std::string defaultPath = "/";  // appended, not "/" + name: GCC 12 warns (-Wrestrict) wrongly
+    defaultPath += layer.defaultPrim();
+    const usda::Prim* prim = layer.defaultPrim().empty() ? nullptr : layer.findPrim(defaultPath);
     if (!prim && !layer.rootPrims.empty()) prim = &layer.rootPrims.front();
     return prim && prim->hasApiSchema(kSubsurfaceApi);
 }

@@ -15,7 +15,7 @@ bool sameCamera(const hd::CameraDesc& a, const hd::CameraDesc& b) {
 }  // namespace
 
 ViewerModel::ViewerModel(hd::RenderDelegate& delegate, int width, int height) : delegate_(delegate) {
-    viewport_ = {ViewCameraPath, width, height};
+    viewport_ = {ViewCameraPath, width, height, {}};
 }
 
 void ViewerModel::open(const std::filesystem::path& file) {
