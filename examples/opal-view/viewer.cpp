@@ -27,6 +27,16 @@ using Clock = std::chrono::steady_clock;
 constexpr auto RefineInterval = std::chrono::milliseconds(500);
 constexpr float PanelWidth = 300.0f;
 
+// The config the delegate converts dome textures with (a scene may set opal:ocioConfig,
+// DELEGATE.md), so that the picture is shown in the space the renderer worked in, as
+// opal-render's preview is; $OCIO or Opal's own otherwise.
+ColorConfig delegateColorConfig(const hd::RenderDelegate& delegate) {
+    const std::map<hd::Token, hd::Value> settings = delegate.renderSettings();
+    const auto setting = settings.find("opal:ocioConfig");
+    const std::string* file = setting == settings.end() ? nullptr : std::get_if<std::string>(&setting->second);
+    return file && !file->empty() ? ColorConfig::fromFile(*file) : ColorConfig::fromEnvironment();
+}
+
 bool opensGivenScene(const ViewOptions& options, const std::vector<ScriptAction>& script) {
     return options.scene || script.empty() || script.front().kind != ActionKind::Load;
 }
@@ -55,6 +65,12 @@ void Viewer::open(const std::filesystem::path& file) {
     converter_.drain();  // it may be reading the open session's buffer
     converter_.take();
     model_.open(file);
+    const ColorConfig config = delegateColorConfig(*renderer_.delegate);
+    if (config.file() != display_.config().file()) {
+        display_ = DisplayPicture(config);
+        converter_.setConfig(config);
+        ++settings_.version;
+    }
     for (const std::string& warning : model_.takeLoadWarnings()) std::cerr << "opal-view: warning: " << warning << '\n';
     window_.setTitle("opal-view - " + file.string());
     requested_ = shown_ = {};

@@ -140,6 +140,31 @@ TEST(Viewer, MovingThePointLightFromLeftToRightMovesTheBrightSide) {
     EXPECT_GT(right, 5.0) << "lit from the right: bright side at " << right << " pixels";
 }
 
+// The picture is shown through the delegate's OCIO config: a scene's opal:ocioConfig (here
+// Opal's config with its sRGB display renamed) replaces $OCIO's or the shipped one.
+TEST(Viewer, ShowsThePictureThroughTheScenesOcioConfig) {
+    const SceneDir dir;
+    dir.writeSphereAsset("sphere");
+    std::string config = slurpFile(std::filesystem::path(OPAL_SOURCE_DIR) / "delegate/output/ocio/config.ocio");
+    for (std::size_t at; (at = config.find("sRGB - Display")) != std::string::npos;) config.replace(at, 14, "Test sRGB");
+    dir.write("renamed.ocio", config);
+    const std::string scene = std::string(OffsetScene) + R"(
+def RenderSettings "Settings"
+{
+    asset opal:ocioConfig = @./renamed.ocio@
+}
+)";
+    dir.write("with-config.usda", scene);
+    dir.write("without-config.usda", OffsetScene);
+    const std::filesystem::path script = dir.write("view.script", "view \"Test sRGB\" \"ACES 1.0 - SDR Video\"\nquit\n");
+    const ViewRun with = runOpalView(dir, "'" + (dir / "with-config.usda").string() + "' --script '" + script.string() + "'");
+    EXPECT_EQ(with.exitCode, 0) << with.err;
+    const ViewRun without =
+        runOpalView(dir, "'" + (dir / "without-config.usda").string() + "' --script '" + script.string() + "'");
+    EXPECT_EQ(without.exitCode, 1);
+    EXPECT_NE(without.err.find(script.string() + ":1: "), std::string::npos) << without.err;
+}
+
 TEST(Viewer, AScriptWithABadActionFailsWithItsLine) {
     const SceneDir dir;
     const std::filesystem::path asset = dir.writeSphereAsset("sphere");

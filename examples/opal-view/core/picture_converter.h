@@ -53,6 +53,8 @@ public:
     std::optional<ConvertedPicture> take();
     // Waits until nothing is queued or running.
     void drain();
+    // Converts with this config from now on; only after drain(), with nothing requested since.
+    void setConfig(const ColorConfig& config) { display_ = DisplayPicture(config); }
 
 private:
     void work();
