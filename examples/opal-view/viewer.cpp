@@ -14,6 +14,7 @@
 #include <glad/gl.h>
 #include <imgui.h>
 
+#include <algorithm>
 #include <iostream>
 #include <variant>
 
@@ -26,6 +27,7 @@ using Clock = std::chrono::steady_clock;
 // edit, which is converted as soon as the converter is free.
 constexpr auto RefineInterval = std::chrono::milliseconds(500);
 constexpr float PanelWidth = 300.0f;
+constexpr float HudHeight = 70.0f;  // the heads-up line and a message under it
 
 // The config the delegate converts dome textures with (a scene may set opal:ocioConfig,
 // DELEGATE.md), so that the picture is shown in the space the renderer worked in, as
@@ -113,6 +115,9 @@ void Viewer::drawInterface() {
     handleViewportInput(model_);
     ImGui::SetNextWindowPos(ImVec2(10.0f, 10.0f), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(PanelWidth, 0.0f), ImGuiCond_FirstUseEver);
+    // Above the heads-up line, however small the window.
+    const float tallest = std::max(ImGui::GetIO().DisplaySize.y - HudHeight, 100.0f);
+    ImGui::SetNextWindowSizeConstraints(ImVec2(PanelWidth, 0.0f), ImVec2(PanelWidth, tallest));
     ImGui::Begin("Look");
     drawMaterialPanel(model_);
     drawLightPanel(model_);

@@ -41,8 +41,12 @@ TEST(OrbitCamera, FramingMakesTheSphereTouchTheNarrowerSide) {
     const double aspect = 16.0 / 9.0;
     frame(camera, sphere, aspect);
     EXPECT_EQ(camera.target, sphere.center);
-    // Vertical half angle: atan(0.5 * 36 / aspect / 50); the sphere subtends asin(r / d).
-    EXPECT_NEAR(std::asin(sphere.radius / camera.distance), std::atan(0.5 * 36.0 / aspect / 50.0), 1e-12);
+    // The 36 x 24 film fitted into 16:9 shows all 24 mm vertically (and 42.7 across): the
+    // half angle is atan(12 / 50); the sphere subtends asin(r / d).
+    EXPECT_NEAR(std::asin(sphere.radius / camera.distance), std::atan(12.0 / 50.0), 1e-12);
+    // In a tall viewport the 36 mm side is the narrower one shown.
+    frame(camera, sphere, 0.5);
+    EXPECT_NEAR(std::asin(sphere.radius / camera.distance), std::atan(18.0 / 50.0), 1e-12);
 }
 
 TEST(OrbitCamera, TumbleKeepsTheTargetAndDistanceAndStopsShortOfThePoles) {
@@ -80,14 +84,16 @@ TEST(OrbitCamera, ASceneCameraConvertsWithoutMoving) {
     original.pitch = 21.0;
     original.focalLength = 35.0;
     const BoundingSphere scene{{10.0, 40.0, 0.0}, 30.0};
-    const hd::CameraDesc desc = cameraDesc(original, 960, 640, scene);
+    const hd::CameraDesc desc = cameraDesc(original, scene);
     const OrbitCamera converted = orbitFromCamera(desc, scene);
     expectNear(eyePosition(converted), eyePosition(original), 1e-9);
     EXPECT_NEAR(converted.yaw, original.yaw, 1e-9);
     EXPECT_NEAR(converted.pitch, original.pitch, 1e-9);
     EXPECT_EQ(converted.focalLength, 35.0);
-    // The film has the viewport's aspect, and the clipping planes hold the whole scene.
-    EXPECT_NEAR(desc.horizontalAperture / desc.verticalAperture, 960.0 / 640.0, 1e-12);
+    // The film is the camera's (the delegate fits it), and the clipping planes hold the
+    // whole scene.
+    EXPECT_EQ(desc.horizontalAperture, 36.0);
+    EXPECT_EQ(desc.verticalAperture, 24.0);
     const double far = (eyePosition(original) - scene.center).length() + scene.radius;
     EXPECT_GE(desc.farClip, far);
     EXPECT_LE(desc.nearClip, (eyePosition(original) - scene.center).length() - scene.radius);

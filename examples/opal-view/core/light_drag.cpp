@@ -6,8 +6,8 @@
 namespace opal::view {
 
 Imath::V3d viewRay(const OrbitCamera& camera, double aspect, double ndcX, double ndcY) {
-    const double halfWidth = 0.5 * camera.horizontalAperture / camera.focalLength;
-    const Imath::V3d local(ndcX * halfWidth, ndcY * halfWidth / aspect, -1.0);
+    const Imath::V2d film = visibleFilm(camera, aspect);
+    const Imath::V3d local(ndcX * 0.5 * film.x / camera.focalLength, ndcY * 0.5 * film.y / camera.focalLength, -1.0);
     Imath::V3d world;
     cameraToWorld(camera).multDirMatrix(local, world);
     return world.normalized();

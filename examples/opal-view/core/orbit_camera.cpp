@@ -25,9 +25,13 @@ Imath::V3d rightOf(const OrbitCamera& c) {
 
 Imath::V3d upOf(const OrbitCamera& c) { return backward(c).cross(rightOf(c)); }
 
-double verticalAperture(const OrbitCamera& c, double aspect) { return c.horizontalAperture / aspect; }
-
 }  // namespace
+
+Imath::V2d visibleFilm(const OrbitCamera& camera, double aspect) {
+    if (aspect > camera.horizontalAperture / camera.verticalAperture)
+        return {camera.verticalAperture * aspect, camera.verticalAperture};
+    return {camera.horizontalAperture, camera.horizontalAperture / aspect};
+}
 
 Imath::V3d eyePosition(const OrbitCamera& camera) { return camera.target + backward(camera) * camera.distance; }
 
@@ -37,16 +41,17 @@ Imath::M44d cameraToWorld(const OrbitCamera& camera) {
 }
 
 double halfFieldOfView(const OrbitCamera& camera, double aspect) {
-    const double film = std::min(camera.horizontalAperture, verticalAperture(camera, aspect));
+    const Imath::V2d film2 = visibleFilm(camera, aspect);
+    const double film = std::min(film2.x, film2.y);
     return std::atan(0.5 * film / camera.focalLength);
 }
 
-hd::CameraDesc cameraDesc(const OrbitCamera& camera, int width, int height, const BoundingSphere& scene) {
+hd::CameraDesc cameraDesc(const OrbitCamera& camera, const BoundingSphere& scene) {
     hd::CameraDesc desc;
     desc.transform = cameraToWorld(camera);
     desc.focalLength = camera.focalLength;
     desc.horizontalAperture = camera.horizontalAperture;
-    desc.verticalAperture = verticalAperture(camera, double(std::max(width, 1)) / std::max(height, 1));
+    desc.verticalAperture = camera.verticalAperture;
     const double reach = (eyePosition(camera) - scene.center).length() + scene.radius;
     desc.nearClip = reach * 1e-4;
     desc.farClip = reach * 2.0;
@@ -60,7 +65,7 @@ void tumble(OrbitCamera& camera, double dxPixels, double dyPixels) {
 
 void track(OrbitCamera& camera, double dxPixels, double dyPixels, int viewportHeight, double aspect) {
     // World units per pixel at the target's depth, so the target follows the cursor.
-    const double film = verticalAperture(camera, aspect);
+    const double film = visibleFilm(camera, aspect).y;
     const double perPixel = camera.distance * film / camera.focalLength / std::max(viewportHeight, 1);
     camera.target += (-dxPixels * rightOf(camera) + dyPixels * upOf(camera)) * perPixel;
 }
@@ -79,6 +84,7 @@ OrbitCamera orbitFromCamera(const hd::CameraDesc& desc, const BoundingSphere& sc
     OrbitCamera camera;
     camera.focalLength = desc.focalLength;
     camera.horizontalAperture = desc.horizontalAperture;
+    camera.verticalAperture = desc.verticalAperture;
     const double along = (scene.center - eye).dot(-back);
     camera.distance = along > 0.0 ? along : (scene.center - eye).length();
     camera.target = eye - back * camera.distance;

@@ -19,14 +19,20 @@ struct OrbitCamera {
     double pitch = 0.0;  // degrees above the horizon, within +-89
     double focalLength = 50.0;
     double horizontalAperture = 36.0;  // same unit as the focal length
+    double verticalAperture = 24.0;
 };
+
+// The film the viewport shows: the camera's film fitted into the viewport's aspect (width
+// / height) as the delegate fits it (usdview's "fit": all of it visible, the other side
+// extended), width and height.
+Imath::V2d visibleFilm(const OrbitCamera& camera, double aspect);
 
 // Camera to world (row vectors, the camera looking down its -Z axis, +Y up in the image).
 Imath::M44d cameraToWorld(const OrbitCamera& camera);
 Imath::V3d eyePosition(const OrbitCamera& camera);
-// A UsdGeomCamera whose film has the viewport's aspect ratio, with clipping planes that
-// hold the whole sphere `scene` from wherever the camera is.
-hd::CameraDesc cameraDesc(const OrbitCamera& camera, int width, int height, const BoundingSphere& scene);
+// A UsdGeomCamera with the camera's film (the delegate fits it into the viewport), with
+// clipping planes that hold the whole sphere `scene` from wherever the camera is.
+hd::CameraDesc cameraDesc(const OrbitCamera& camera, const BoundingSphere& scene);
 // Half the smaller field of view, radians, for a viewport of this aspect (width / height).
 double halfFieldOfView(const OrbitCamera& camera, double aspect);
 

@@ -35,7 +35,7 @@ void ViewerModel::open(const std::filesystem::path& file) {
     home_ = initialCamera();
     camera = home_;
     scene::Scene scene = document_->scene;
-    scene.cameras[ViewCameraPath] = {cameraDesc(camera, viewport_.width, viewport_.height, bounds_), {}};
+    scene.cameras[ViewCameraPath] = {cameraDesc(camera, bounds_), {}};
     edited_.emplace(scene);
     session_ = std::make_unique<RenderSession>(delegate_, std::move(scene), viewport_);
     submitted_ = viewport_;
@@ -104,7 +104,7 @@ void ViewerModel::setViewport(int width, int height) {
 
 int ViewerModel::update() {
     if (!session_) return 0;
-    const hd::CameraDesc desc = cameraDesc(camera, viewport_.width, viewport_.height, bounds_);
+    const hd::CameraDesc desc = cameraDesc(camera, bounds_);
     if (!sameCamera(desc, scene().cameras.at(ViewCameraPath).desc)) edited_->setCamera(ViewCameraPath, desc);
     if (!edited_->changed() && viewport_ == submitted_) return 0;
     if (!session_->firstPassDone()) return 0;  // the edits wait, merged, for the next frame
