@@ -67,10 +67,13 @@ bool RenderSession::firstPassDone() const {
         std::lock_guard lock(mutex_);
         if (pending_ || running_ || status_.applied != submissions_) return false;
     }
+    // A frame that failed on the render thread counts converged; a delegate that does not
+    // count passes cannot be waited for.
+    if (pass_->isConverged()) return true;
     const auto stats = delegate_.renderStats();
     const auto passes = stats.find("passes");
     const int* done = passes == stats.end() ? nullptr : std::get_if<int>(&passes->second);
-    return done && *done >= 1;
+    return !done || *done >= 1;
 }
 
 SessionStatus RenderSession::status() const {
