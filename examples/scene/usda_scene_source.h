@@ -15,6 +15,9 @@ public:
     explicit UsdaSceneSource(Scene scene) : scene_(std::move(scene)) {}
 
     const Scene& scene() const { return scene_; }
+    // A host that edits the scene (a viewer) hands the edited copy over before a sync, from
+    // the thread that syncs, and marks what changed dirty. Prims keep their paths.
+    void setScene(Scene scene) { scene_ = std::move(scene); }
 
     // The scene time in seconds (0 at first) at which time-varying lights (a shadow-field
     // light's flicker) are described. Setting it marks those lights dirty in `index`.

@@ -1,0 +1,52 @@
+#include "examples/opal-view/color_panel.h"
+
+#include "delegate/hd/aov.h"
+
+#include <imgui.h>
+
+#include <vector>
+
+namespace opal::view {
+namespace {
+
+// A combo over `items`; the chosen one, or "" when nothing was picked this frame.
+std::string pick(const char* label, const std::string& current, const std::vector<std::string>& items) {
+    std::string chosen;
+    if (!ImGui::BeginCombo(label, current.c_str())) return chosen;
+    for (const std::string& item : items)
+        if (ImGui::Selectable(item.c_str(), item == current)) chosen = item;
+    ImGui::EndCombo();
+    return chosen;
+}
+
+std::vector<std::string> aovNames() {
+    std::vector<std::string> names;
+    for (const hd::AovDescriptor& aov : hd::aovTable()) names.push_back(aov.name);
+    return names;
+}
+
+}  // namespace
+
+void drawColorPanel(DisplayPicture& picture, DisplaySettings& settings) {
+    if (!ImGui::CollapsingHeader("Color", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    const ColorConfig& config = picture.config();
+    if (const std::string display = pick("display", picture.display(), config.displays()); !display.empty()) {
+        picture.setDisplayView(display, config.defaultView(display));
+        ++settings.version;
+    }
+    if (const std::string view = pick("view", picture.view(), config.views(picture.display())); !view.empty()) {
+        picture.setDisplayView(picture.display(), view);
+        ++settings.version;
+    }
+    float exposure = float(settings.exposure);
+    if (ImGui::SliderFloat("exposure", &exposure, -10.0f, 10.0f, "%.2f stops")) {
+        settings.exposure = exposure;
+        ++settings.version;
+    }
+    if (const std::string aov = pick("AOV", settings.aov, aovNames()); !aov.empty()) {
+        settings.aov = aov;
+        ++settings.version;
+    }
+}
+
+}  // namespace opal::view

@@ -1,0 +1,146 @@
+#include "examples/opal-view/core/render_session.h"
+
+#include "schema/error.h"
+
+#include <algorithm>
+#include <chrono>
+#include <variant>
+
+namespace opal::view {
+namespace {
+
+void markAll(const scene::Scene& scene, DirtyPrims& dirty) {
+    const auto mark = [&](const auto& prims) {
+        for (const auto& entry : prims) dirty[entry.first] |= hd::Dirty::AllDirty;
+    };
+    mark(scene.materials);
+    mark(scene.cameras);
+    mark(scene.lights);
+    mark(scene.meshes);
+}
+
+}  // namespace
+
+RenderSession::RenderSession(hd::RenderDelegate& delegate, scene::Scene scene, Viewport viewport)
+    : delegate_(delegate), source_(scene), buffers_({}, true), index_(delegate) {
+    source_.populate(index_);
+    pass_ = delegate_.createRenderPass(index_);
+    Update first{std::move(scene), {}, std::move(viewport)};
+    markAll(first.scene, first.dirty);
+    pending_ = std::move(first);
+    worker_ = std::thread([this] { work(); });
+}
+
+RenderSession::~RenderSession() {
+    {
+        std::lock_guard lock(mutex_);
+        quit_ = true;
+    }
+    wake_.notify_all();
+    worker_.join();
+}
+
+int RenderSession::submit(const scene::Scene& scene, const DirtyPrims& changes, const Viewport& viewport) {
+    int number = 0;
+    {
+        std::lock_guard lock(mutex_);
+        if (!pending_) pending_ = Update{};
+        pending_->scene = scene;
+        pending_->viewport = viewport;
+        pending_->number = number = ++submissions_;
+        for (const auto& [path, bits] : changes) pending_->dirty[path] |= bits;
+    }
+    wake_.notify_all();
+    return number;
+}
+
+bool RenderSession::settled() const {
+    {
+        std::lock_guard lock(mutex_);
+        if (pending_ || running_) return false;
+    }
+    return pass_->isConverged();
+}
+
+bool RenderSession::firstPassDone() const {
+    {
+        std::lock_guard lock(mutex_);
+        if (pending_ || running_ || status_.applied != submissions_) return false;
+    }
+    // A frame that failed on the render thread counts converged; a delegate that does not
+    // count passes cannot be waited for.
+    if (pass_->isConverged()) return true;
+    const auto stats = delegate_.renderStats();
+    const auto passes = stats.find("passes");
+    const int* done = passes == stats.end() ? nullptr : std::get_if<int>(&passes->second);
+    return !done || *done >= 1;
+}
+
+SessionStatus RenderSession::status() const {
+    std::lock_guard lock(mutex_);
+    SessionStatus status = status_;
+    status.busy = pending_.has_value() || running_;
+    return status;
+}
+
+std::vector<std::string> RenderSession::takeMessages() {
+    std::vector<std::string> messages;
+    {
+        std::lock_guard lock(mutex_);
+        messages.swap(messages_);
+    }
+    for (const std::string& error : delegate_.takeErrors()) messages.push_back("error: " + error);
+    return messages;
+}
+
+const hd::RenderBuffer& RenderSession::buffer(const std::string& aov) const {
+    for (const hd::AovBinding& binding : buffers_.bindings())
+        if (binding.aov == aov) return *binding.buffer;
+    throw Error("the viewer binds no AOV '" + aov + "'");
+}
+
+std::vector<hd::AovBinding> RenderSession::bindings(const std::vector<std::string>& aovs) const {
+    std::vector<hd::AovBinding> bound;
+    for (const hd::AovBinding& binding : buffers_.bindings())
+        if (aovs.empty() || std::find(aovs.begin(), aovs.end(), binding.aov) != aovs.end()) bound.push_back(binding);
+    return bound;
+}
+
+void RenderSession::work() {
+    for (;;) {
+        std::unique_lock lock(mutex_);
+        wake_.wait(lock, [this] { return quit_ || pending_; });
+        if (quit_) return;
+        Update update = std::move(*pending_);
+        pending_.reset();
+        running_ = true;
+        lock.unlock();
+        syncAndExecute(std::move(update));
+        lock.lock();
+        running_ = false;
+    }
+}
+
+void RenderSession::syncAndExecute(Update update) {
+    const int number = update.number;
+    const auto start = std::chrono::steady_clock::now();
+    std::vector<std::string> messages;
+    try {
+        source_.setScene(std::move(update.scene));
+        for (const auto& [path, bits] : update.dirty) index_.changeTracker().markDirty(path, bits);
+        index_.sync();
+        hd::RenderPassState state{update.viewport.camera, update.viewport.width, update.viewport.height};
+        pass_->execute(state, bindings(update.viewport.aovs));
+    } catch (const std::exception& e) {
+        messages.push_back("error: " + std::string(e.what()));
+    }
+    for (const std::string& warning : delegate_.takeWarnings()) messages.push_back("warning: " + warning);
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    std::lock_guard lock(mutex_);
+    status_.lastSyncMs = ms;
+    status_.applied = number;
+    ++status_.syncs;
+    messages_.insert(messages_.end(), messages.begin(), messages.end());
+}
+
+}  // namespace opal::view

@@ -1,0 +1,99 @@
+#include "examples/opal-view/core/scene_document.h"
+
+#include "examples/opal-view/core/scene_bounds.h"
+#include "examples/scene/render_setup.h"
+#include "examples/scene/scene_reader.h"
+#include "schema/asset/asset_layer.h"
+#include "schema/error.h"
+#include "schema/usd/usda_reader.h"
+
+#include <cmath>
+
+namespace opal::view {
+namespace {
+
+// The key light of a staged asset: a point light above, left of and in front of the
+// bounding sphere, three radii away, bright enough that a white diffuse surface facing
+// it would be lit with irradiance pi (radiance about 1).
+scene::SceneLight keyLight(const BoundingSphere& bounds) {
+    const Imath::V3d direction = Imath::V3d(-1.0, 1.2, 1.5).normalized();
+    const double distance = 3.0 * bounds.radius;
+    hd::LightDesc desc;
+    desc.kind = hd::LightKind::Sphere;
+    desc.treatAsPoint = true;
+    desc.radius = 0.0;
+    desc.intensity = distance * distance;
+    desc.transform.setTranslation(bounds.center + direction * distance);
+    return {hd::PrimType::SphereLight, desc, {}};
+}
+
+scene::Scene stagedAsset(const std::filesystem::path& file, scene::AssetCache& assets) {
+    scene::Scene scene;
+    scene.file = file;
+    hd::MeshDesc mesh;
+    mesh.asset = assets.load(file);
+    scene.metersPerUnit = 0.001 / mesh.asset->unitsPerMm;
+    scene.meshes["/" + mesh.asset->name] = {mesh, file, {}};
+    for (const std::string& warning : assets.takeWarnings()) scene.warnings.push_back(warning);
+    scene.lights[KeyLightPath] = keyLight(sceneBounds(scene));
+    return scene;
+}
+
+bool usesViewerRoot(const scene::Scene& scene) {
+    const auto under = [](const auto& prims) {
+        for (const auto& entry : prims)
+            if (entry.first == ViewerRoot || entry.first.starts_with(ViewerRoot + "/")) return true;
+        return false;
+    };
+    return under(scene.meshes) || under(scene.materials) || under(scene.lights) || under(scene.cameras);
+}
+
+std::string leafName(const hd::SdfPath& path) { return path.substr(path.find_last_of('/') + 1); }
+
+// Every unbound mesh gets its own material prim holding the asset's default.
+void bindEditableMaterials(scene::Scene& scene) {
+    for (auto& [path, mesh] : scene.meshes) {
+        if (!mesh.desc.material.empty()) continue;
+        const hd::SdfPath material = ViewerRoot + "/Materials/" + leafName(path);
+        hd::MaterialDesc desc;
+        desc.subsurface = mesh.desc.asset->defaultMaterial;
+        scene.materials[material] = {desc, {}};
+        mesh.desc.material = material;
+    }
+}
+
+// The camera the scene renders through (opal-render's choice), or its first one.
+std::optional<hd::SdfPath> chooseSceneCamera(const scene::Scene& scene) {
+    if (scene.cameras.empty()) return std::nullopt;
+    try {
+        return scene::chooseRenderSetup(scene, {}).camera;
+    } catch (const Error&) {  // several cameras and no RenderSettings: the viewer may pick
+        return scene.cameras.begin()->first;
+    }
+}
+
+}  // namespace
+
+bool isAssetLayer(const std::filesystem::path& file) {
+    const usda::Layer layer = usda::readUsdaFile(file);
+    std::string defaultPath = "/";  // appended, not "/" + name: GCC 12 warns (-Wrestrict) wrongly
+    defaultPath += layer.defaultPrim();
+    const usda::Prim* prim = layer.defaultPrim().empty() ? nullptr : layer.findPrim(defaultPath);
+    if (!prim && !layer.rootPrims.empty()) prim = &layer.rootPrims.front();
+    return prim && prim->hasApiSchema(kSubsurfaceApi);
+}
+
+SceneDocument loadDocument(const std::filesystem::path& file, scene::AssetCache& assets) {
+    SceneDocument document;
+    document.assetOnly = isAssetLayer(file);
+    document.scene = document.assetOnly ? stagedAsset(file, assets) : scene::readScene(file, assets);
+    if (document.scene.meshes.empty())
+        throw Error(file.string() + ": the scene has no translucent mesh (a prim referencing a baked asset) to look at");
+    if (!document.assetOnly && usesViewerRoot(document.scene))
+        throw Error(file.string() + ": the scene has prims under <" + ViewerRoot + ">, which the viewer needs for its own");
+    document.sceneCamera = chooseSceneCamera(document.scene);
+    bindEditableMaterials(document.scene);
+    return document;
+}
+
+}  // namespace opal::view

@@ -1,0 +1,140 @@
+#include "examples/opal-view/core/script.h"
+
+#include "examples/opal-view/core/script_words.h"
+#include "schema/error.h"
+
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace opal::view {
+namespace {
+
+// One form of an action. Tokens: a literal keyword, "=word" a keyword kept in `words`
+// (a parameter name), "W" any word, "N" a finite number.
+struct ActionForm {
+    const char* pattern;
+    ActionKind kind;
+};
+
+constexpr ActionForm Forms[] = {
+    {"load W", ActionKind::Load},
+    {"material set =sigma_s N N N", ActionKind::MaterialSet},
+    {"material set =sigma_a N N N", ActionKind::MaterialSet},
+    {"material set =eta N", ActionKind::MaterialSet},
+    {"material set =roughness N", ActionKind::MaterialSet},
+    {"material reset", ActionKind::MaterialReset},
+    {"light move W N N N", ActionKind::LightMove},
+    {"light set W =intensity N", ActionKind::LightSet},
+    {"light set W =exposure N", ActionKind::LightSet},
+    {"light set W =color N N N", ActionKind::LightSet},
+    {"view W W", ActionKind::View},
+    {"exposure N", ActionKind::Exposure},
+    {"aov W", ActionKind::Aov},
+    {"camera frame", ActionKind::CameraFrame},
+    {"camera reset", ActionKind::CameraReset},
+    {"camera orbit N N", ActionKind::CameraOrbit},
+    {"wait", ActionKind::Wait},
+    {"wait N", ActionKind::Wait},
+    {"drag =material N", ActionKind::Drag},
+    {"drag =light W N", ActionKind::Drag},
+    {"screenshot W", ActionKind::Screenshot},
+    {"save exr W", ActionKind::SaveExr},
+    {"quit", ActionKind::Quit},
+};
+
+std::vector<std::string> tokensOf(const char* pattern) {
+    std::vector<std::string> tokens;
+    std::istringstream in(pattern);
+    for (std::string token; in >> token;) tokens.push_back(token);
+    return tokens;
+}
+
+bool parseNumber(const std::string& word, double& value) {
+    const char* end = word.data() + word.size();
+    const auto [ptr, ec] = std::from_chars(word.data(), end, value);
+    return ec == std::errc() && ptr == end && std::isfinite(value);
+}
+
+// The action `words` spell in this form, or false.
+bool match(const ActionForm& form, const std::vector<std::string>& words, ScriptAction& action) {
+    const std::vector<std::string> tokens = tokensOf(form.pattern);
+    if (tokens.size() != words.size()) return false;
+    ScriptAction candidate{form.kind, action.where, {}, {}};
+    for (std::size_t i = 0; i < tokens.size(); ++i) {
+        const std::string& token = tokens[i];
+        if (token == "W") {
+            candidate.words.push_back(words[i]);
+        } else if (token == "N") {
+            double value = 0.0;
+            if (!parseNumber(words[i], value)) return false;
+            candidate.numbers.push_back(value);
+        } else if (token.front() == '=') {
+            if (words[i] != token.substr(1)) return false;
+            candidate.words.push_back(words[i]);
+        } else if (words[i] != token) {
+            return false;
+        }
+    }
+    action = std::move(candidate);
+    return true;
+}
+
+std::string readable(const char* pattern) {
+    std::string text;
+    for (std::string token : tokensOf(pattern)) {
+        if (token == "W") token = "WORD";
+        else if (token == "N") token = "NUMBER";
+        else if (token.front() == '=') token = token.substr(1);
+        text += (text.empty() ? "" : " ") + token;
+    }
+    return text;
+}
+
+std::string usage(const std::string& verb) {
+    std::string forms, verbs;
+    for (const ActionForm& form : Forms) {
+        const std::string first = tokensOf(form.pattern).front();
+        if (first == verb) forms += (forms.empty() ? "" : "; ") + readable(form.pattern);
+        if (verbs.find(" " + first + ",") == std::string::npos) verbs += " " + first + ",";
+    }
+    if (forms.empty()) return "unknown action '" + verb + "' (actions:" + verbs.substr(0, verbs.size() - 1) + ")";
+    return "bad arguments for '" + verb + "': expected " + forms;
+}
+
+ScriptAction parseLine(const std::vector<std::string>& words, const std::string& where) {
+    ScriptAction action{ActionKind::Quit, where, {}, {}};
+    for (const ActionForm& form : Forms)
+        if (match(form, words, action)) return action;
+    throw Error(where + ": " + usage(words.front()));
+}
+
+}  // namespace
+
+std::vector<ScriptAction> parseScript(const std::string& text, const std::string& fileName) {
+    std::vector<ScriptAction> actions;
+    std::istringstream in(text);
+    int number = 0;
+    for (std::string line; std::getline(in, line);) {
+        const std::string where = fileName + ":" + std::to_string(++number);
+        std::vector<std::string> words;
+        try {
+            words = splitScriptWords(line);
+        } catch (const Error& e) {
+            throw Error(where + ": " + e.what());
+        }
+        if (!words.empty()) actions.push_back(parseLine(words, where));
+    }
+    return actions;
+}
+
+std::vector<ScriptAction> readScript(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) throw Error(file.string() + ": cannot read the script");
+    std::stringstream text;
+    text << in.rdbuf();
+    return parseScript(text.str(), file.string());
+}
+
+}  // namespace opal::view

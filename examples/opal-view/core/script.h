@@ -1,0 +1,50 @@
+// opal-view --script FILE: one action per line, read and checked before anything runs, so a
+// misspelt action fails at once with FILE:LINE. Blank lines and '#' comments are skipped;
+// words are separated by spaces, and a word with spaces is written in double quotes.
+//
+//   load PATH                          open a scene or asset layer
+//   material set sigma_s|sigma_a R G B the selected mesh's material, mm^-1 per channel
+//   material set eta|roughness V
+//   material reset                     back to the asset's baked default
+//   light move PATH X Y Z              a light's position in world space
+//   light set PATH intensity|exposure V
+//   light set PATH color R G B
+//   view DISPLAY VIEW                  the OCIO display and view
+//   exposure STOPS                     display exposure
+//   aov NAME                           the AOV shown (hd/aov.h)
+//   camera frame|reset
+//   camera orbit YAW PITCH             degrees, added to the camera's
+//   wait [SECONDS]                     until the picture converged (default 300 s)
+//   drag material SECONDS              a person dragging the sigma_a green slider back and
+//                                      forth (2 s a sweep), then letting go; prints what the
+//                                      interface showed meanwhile (edit_latency.h)
+//   drag light PATH SECONDS            the same, circling the light about the object (4 s a turn)
+//   screenshot OUT.png                 the window's pixels, interface included
+//   save exr OUT.exr                   every AOV, scene-linear (waits for convergence)
+//   quit
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace opal::view {
+
+enum class ActionKind {
+    Load, MaterialSet, MaterialReset, LightMove, LightSet, View, Exposure, Aov,
+    CameraFrame, CameraReset, CameraOrbit, Wait, Drag, Screenshot, SaveExr, Quit
+};
+
+struct ScriptAction {
+    ActionKind kind = ActionKind::Quit;
+    std::string where;                // "FILE:LINE", the prefix of every message about it
+    std::vector<std::string> words;   // paths, names and parameter names, in order
+    std::vector<double> numbers;      // the numeric arguments, in order
+};
+
+// Throws opal::Error "FILE:LINE: ..." at the first line that is not an action above.
+std::vector<ScriptAction> parseScript(const std::string& text, const std::string& fileName);
+// Reads the file first (an unreadable file is an error naming it).
+std::vector<ScriptAction> readScript(const std::filesystem::path& file);
+
+}  // namespace opal::view

@@ -1,0 +1,146 @@
+#include "examples/opal-view/core/script_runner.h"
+
+#include "examples/opal-view/core/edited_scene.h"
+#include "schema/error.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+namespace opal::view {
+namespace {
+
+constexpr double DefaultWaitSeconds = 300.0;
+
+void runMaterial(const ScriptAction& action, ViewerModel& model) {
+    if (action.kind == ActionKind::MaterialReset) return model.resetMaterial();
+    model.setMaterialParameter(action.words.at(0), action.numbers);
+}
+
+void runLight(const ScriptAction& action, ViewerModel& model) {
+    const hd::SdfPath& path = action.words.at(0);
+    if (action.kind == ActionKind::LightMove)
+        return model.moveLight(path, {action.numbers[0], action.numbers[1], action.numbers[2]});
+    hd::LightDesc light = model.light(path);
+    const std::string& parameter = action.words.at(1);
+    if (parameter == "intensity") light.intensity = action.numbers[0];
+    if (parameter == "exposure") light.exposure = action.numbers[0];
+    if (parameter == "color") light.color = Rgb{action.numbers[0], action.numbers[1], action.numbers[2]};
+    model.setLight(path, light);
+}
+
+void runCamera(const ScriptAction& action, ViewerModel& model) {
+    if (action.kind == ActionKind::CameraFrame) return model.frameAll();
+    if (action.kind == ActionKind::CameraReset) return model.resetCamera();
+    model.camera.yaw += action.numbers[0];
+    model.camera.pitch = std::clamp(model.camera.pitch + action.numbers[1], -89.0, 89.0);
+}
+
+// The sigma_a green slider swept log-uniformly over the asset's range, 2 s a sweep.
+void dragMaterial(ViewerModel& model, double seconds) {
+    const EditableRange& range = model.selectedAsset().range;
+    const double phase = 0.5 + 0.5 * std::sin(std::numbers::pi * seconds);
+    hd::MaterialDesc material = model.selectedMaterial();
+    material.subsurface.sigmaA[1] = range.sigmaAMin * std::pow(range.sigmaAMax / range.sigmaAMin, phase);
+    model.setSelectedMaterial(material);
+}
+
+// The light swept around the object's centre on its sphere: a quarter turn a second about
+// +Y, and tipped by up to 30 degrees about +X (so a light straight above moves too).
+void dragLight(ViewerModel& model, const hd::SdfPath& path, const Imath::V3d& home, double seconds) {
+    const Imath::V3d center = model.bounds().center;
+    Imath::M44d turn;
+    turn.rotate(Imath::V3d(std::numbers::pi / 6.0 * std::sin(std::numbers::pi * seconds), 0.5 * std::numbers::pi * seconds, 0.0));
+    Imath::V3d offset;
+    turn.multDirMatrix(home - center, offset);
+    model.moveLight(path, center + offset);
+}
+
+}  // namespace
+
+bool ScriptRunner::drag(const ScriptAction& action, ScriptHost& host) {
+    using Clock = std::chrono::steady_clock;
+    const bool light = action.words[0] == "light";
+    if (!dragging_) {
+        dragging_ = true;
+        dragStart_ = Clock::now();
+        if (light) dragHome_ = lightPosition(host.model().light(action.words[1]));
+        host.beginMeasure();
+    }
+    const double seconds = std::chrono::duration<double>(Clock::now() - dragStart_).count();
+    if (seconds < action.numbers.back()) {
+        if (light) dragLight(host.model(), action.words[1], dragHome_, seconds);
+        else dragMaterial(host.model(), seconds);
+        lastEdit_ = Clock::now();
+        return false;
+    }
+    if (!waitForPicture(action, host, DefaultWaitSeconds)) return false;
+    const double settle = std::chrono::duration<double, std::milli>(Clock::now() - lastEdit_).count();
+    std::printf("opal-view: %s drag %s: %s; converged %.0f ms after the last edit\n", action.where.c_str(),
+                action.words[0].c_str(), host.endMeasure().c_str(), settle);
+    std::fflush(stdout);
+    dragging_ = false;
+    return true;
+}
+
+bool ScriptRunner::step(ScriptHost& host) {
+    while (next_ < actions_.size()) {
+        const ScriptAction& action = actions_[next_];
+        try {
+            const std::string error = host.takeRenderError();
+            if (!error.empty()) throw Error("the renderer failed: " + error);
+            if (!run(action, host)) return false;
+        } catch (const Error& e) {
+            throw Error(action.where + ": " + e.what());
+        }
+        ++next_;
+        // A screenshot is taken at the end of this frame: nothing may change before it.
+        if (action.kind == ActionKind::Screenshot) return next_ == actions_.size();
+    }
+    return true;
+}
+
+bool ScriptRunner::waitForPicture(const ScriptAction& action, ScriptHost& host, double seconds) {
+    if (!waiting_) waitStart_ = std::chrono::steady_clock::now();
+    waiting_ = true;
+    if (host.pictureSettled()) {
+        waiting_ = false;
+        return true;
+    }
+    const double waited = std::chrono::duration<double>(std::chrono::steady_clock::now() - waitStart_).count();
+    if (waited > seconds)
+        throw Error(std::string(action.kind == ActionKind::Wait ? "wait" : action.kind == ActionKind::Drag ? "drag" : "save exr") +
+                    ": the picture did not converge within " + std::to_string(int(seconds)) + " s");
+    return false;
+}
+
+bool ScriptRunner::run(const ScriptAction& action, ScriptHost& host) {
+    ViewerModel& model = host.model();
+    switch (action.kind) {
+    case ActionKind::Load: host.open(action.words[0]); return true;
+    case ActionKind::MaterialSet:
+    case ActionKind::MaterialReset: runMaterial(action, model); return true;
+    case ActionKind::LightMove:
+    case ActionKind::LightSet: runLight(action, model); return true;
+    case ActionKind::View: host.setDisplayView(action.words[0], action.words[1]); return true;
+    case ActionKind::Exposure: host.setExposure(action.numbers[0]); return true;
+    case ActionKind::Aov: host.setAov(action.words[0]); return true;
+    case ActionKind::CameraFrame:
+    case ActionKind::CameraReset:
+    case ActionKind::CameraOrbit: runCamera(action, model); return true;
+    case ActionKind::Wait:
+        return waitForPicture(action, host, action.numbers.empty() ? DefaultWaitSeconds : action.numbers[0]);
+    case ActionKind::Drag: return drag(action, host);
+    case ActionKind::Screenshot: host.requestScreenshot(action.words[0]); return true;
+    case ActionKind::SaveExr:
+        if (!waiting_) host.renderEveryAov();
+        if (!waitForPicture(action, host, DefaultWaitSeconds)) return false;
+        host.saveExr(action.words[0]);
+        return true;
+    case ActionKind::Quit: host.quit(); return true;
+    }
+    return true;
+}
+
+}  // namespace opal::view

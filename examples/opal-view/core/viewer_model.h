@@ -1,0 +1,86 @@
+// Everything the viewer edits and renders, without a window: the open document, the
+// interface's copy of its scene, the free camera, the selection, and the render session
+// the edits go to. The interface and the script runner both drive it; update() once per
+// interface frame hands what changed to the session (returning at once).
+#pragma once
+
+#include "examples/opal-view/core/edited_scene.h"
+#include "examples/opal-view/core/orbit_camera.h"
+#include "examples/opal-view/core/render_session.h"
+#include "examples/opal-view/core/scene_document.h"
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+
+namespace opal::view {
+
+class ViewerModel {
+public:
+    // `delegate` must outlive the model. The viewport starts at width x height.
+    ViewerModel(hd::RenderDelegate& delegate, int width, int height);
+
+    // Opens a scene or asset layer (scene_document.h), replacing the open one; the camera
+    // starts at the scene's camera, or framing everything. Throws opal::Error; the open
+    // document then stays.
+    void open(const std::filesystem::path& file);
+    bool isOpen() const { return session_ != nullptr; }
+    const std::filesystem::path& file() const { return file_; }
+    const scene::Scene& scene() const { return edited_->scene(); }
+    const BoundingSphere& bounds() const { return bounds_; }
+    std::vector<std::string> takeLoadWarnings();
+
+    // The mesh whose material the panel edits (the first by default) and its material.
+    const hd::SdfPath& selectedMesh() const { return selectedMesh_; }
+    void selectMesh(const hd::SdfPath& mesh);
+    const TranslucentAsset& selectedAsset() const;
+    const hd::SdfPath& selectedMaterialPath() const;
+    const hd::MaterialDesc& selectedMaterial() const;
+    void setSelectedMaterial(const hd::MaterialDesc& desc);
+    // material_edit.h's withParameter on the selected material; throws opal::Error.
+    void setMaterialParameter(std::string_view parameter, std::span<const double> values);
+    void resetMaterial();
+
+    // Throws opal::Error naming the path for a light the scene does not have.
+    const hd::LightDesc& light(const hd::SdfPath& path) const;
+    void setLight(const hd::SdfPath& path, const hd::LightDesc& desc);
+    void moveLight(const hd::SdfPath& path, const Imath::V3d& position);
+    std::optional<hd::SdfPath> selectedLight;  // the light the viewport drags
+
+    OrbitCamera camera;
+    void frameAll();
+    void resetCamera();
+    void setViewport(int width, int height);
+    // The AOVs the renderer writes (empty: every one); the others keep what they last held.
+    void setRenderedAovs(std::vector<std::string> aovs) { viewport_.aovs = std::move(aovs); }
+    int width() const { return viewport_.width; }
+    int height() const { return viewport_.height; }
+    double aspect() const { return double(viewport_.width) / viewport_.height; }
+
+    // Once per interface frame: the camera and every edit since go to the session, once
+    // the frame of the last submission finished a pass (RenderSession::firstPassDone).
+    // Returns the submission's number (RenderSession::submit), 0 when nothing went.
+    int update();
+    RenderSession& session() const { return *session_; }
+    // Edits submitted and the session settled (converged on the latest scene).
+    bool settled() const;
+
+private:
+    OrbitCamera initialCamera() const;
+
+    hd::RenderDelegate& delegate_;
+    scene::AssetCache assets_;
+    std::filesystem::path file_;
+    std::optional<SceneDocument> document_;
+    std::optional<EditedScene> edited_;
+    BoundingSphere bounds_;
+    hd::SdfPath selectedMesh_;
+    Viewport viewport_, submitted_;
+    OrbitCamera home_;
+    std::vector<std::string> loadWarnings_;
+    std::unique_ptr<RenderSession> session_;  // last: goes first
+};
+
+}  // namespace opal::view

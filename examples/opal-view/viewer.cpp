@@ -1,0 +1,250 @@
+#include "examples/opal-view/viewer.h"
+
+#include "delegate/hd/aov.h"
+#include "delegate/output/exr_writer.h"
+#include "examples/opal-view/color_panel.h"
+#include "examples/opal-view/core/default_scene.h"
+#include "examples/opal-view/light_panel.h"
+#include "examples/opal-view/material_panel.h"
+#include "examples/opal-view/screenshot.h"
+#include "examples/opal-view/viewport_input.h"
+#include "plugin/search_paths.h"
+#include "schema/error.h"
+
+#include <glad/gl.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <iostream>
+#include <variant>
+
+namespace opal::view {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+// While the picture is still refining, a new pass is converted at most this often (the
+// conversion competes with the renderer for the CPU), except the first pass of a new
+// edit, which is converted as soon as the converter is free.
+constexpr auto RefineInterval = std::chrono::milliseconds(500);
+constexpr float PanelWidth = 300.0f;
+constexpr float HudHeight = 70.0f;  // the heads-up line and a message under it
+
+// The config the delegate converts dome textures with (a scene may set opal:ocioConfig,
+// DELEGATE.md), so that the picture is shown in the space the renderer worked in, as
+// opal-render's preview is; $OCIO or Opal's own otherwise.
+ColorConfig delegateColorConfig(const hd::RenderDelegate& delegate) {
+    const std::map<hd::Token, hd::Value> settings = delegate.renderSettings();
+    const auto setting = settings.find("opal:ocioConfig");
+    const std::string* file = setting == settings.end() ? nullptr : std::get_if<std::string>(&setting->second);
+    return file && !file->empty() ? ColorConfig::fromFile(*file) : ColorConfig::fromEnvironment();
+}
+
+bool opensGivenScene(const ViewOptions& options, const std::vector<ScriptAction>& script) {
+    return options.scene || script.empty() || script.front().kind != ActionKind::Load;
+}
+
+}  // namespace
+
+Viewer::Viewer(const ViewOptions& options, std::vector<ScriptAction> script)
+    : renderer_(loadRenderer(options.delegate, std::cerr)),
+      window_(options.width, options.height, "opal-view"),
+      imgui_(window_),
+      display_(ColorConfig::fromEnvironment()),
+      model_(*renderer_.delegate, window_.framebufferSize().first, window_.framebufferSize().second),
+      converter_(display_.config()) {
+    const bool openScene = opensGivenScene(options, script);
+    model_.setRenderedAovs({"color"});
+    if (!script.empty()) script_.emplace(std::move(script));
+    if (openScene) open(options.scene ? *options.scene : defaultScene(executablePath()));
+    lastFrame_ = Clock::now();
+}
+
+void Viewer::run() {
+    while (!window_.closeRequested() && !quit_) frame();
+}
+
+void Viewer::open(const std::filesystem::path& file) {
+    converter_.drain();  // it may be reading the open session's buffer
+    converter_.take();
+    model_.open(file);
+    const ColorConfig config = delegateColorConfig(*renderer_.delegate);
+    if (config.file() != display_.config().file()) {
+        display_ = DisplayPicture(config);
+        converter_.setConfig(config);
+        ++settings_.version;
+    }
+    for (const std::string& warning : model_.takeLoadWarnings()) std::cerr << "opal-view: warning: " << warning << '\n';
+    window_.setTitle("opal-view - " + file.string());
+    requested_ = shown_ = {};
+    shownApplied_ = 0;
+}
+
+void Viewer::frame() {
+    window_.pollEvents();
+    const Clock::time_point now = Clock::now();
+    hud_.frameMs = std::chrono::duration<double, std::milli>(now - lastFrame_).count();
+    lastFrame_ = now;
+    imgui_.beginFrame();
+    const auto [width, height] = window_.framebufferSize();
+    if (width > 0 && height > 0) model_.setViewport(width, height);
+    if (model_.isOpen()) drawInterface();
+    collectMessages();
+    if (script_ && script_->step(*this)) script_.reset();
+    // What is shown (color's alpha travels with it), or everything while an EXR waits.
+    if (everyAov_) model_.setRenderedAovs({});
+    else model_.setRenderedAovs(settings_.aov == "color" ? std::vector<std::string>{"color"}
+                                                         : std::vector<std::string>{"color", settings_.aov});
+    const int submitted = model_.update();
+    if (measure_) {
+        measure_->frame();
+        if (submitted > 0) measure_->edited(submitted, Clock::now());
+    }
+    refreshPicture();
+    glViewport(0, 0, width, height);
+    picture_.draw();
+    imgui_.render();
+    if (screenshot_) {
+        saveScreenshot(*screenshot_, width, height);
+        std::cout << "opal-view: wrote " << screenshot_->string() << std::endl;
+        screenshot_.reset();
+    }
+    window_.swapBuffers();
+}
+
+void Viewer::drawInterface() {
+    handleViewportInput(model_);
+    ImGui::SetNextWindowPos(ImVec2(10.0f, 10.0f), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(PanelWidth, 0.0f), ImGuiCond_FirstUseEver);
+    // Above the heads-up line, however small the window.
+    const float tallest = std::max(ImGui::GetIO().DisplaySize.y - HudHeight, 100.0f);
+    ImGui::SetNextWindowSizeConstraints(ImVec2(PanelWidth, 0.0f), ImVec2(PanelWidth, tallest));
+    ImGui::Begin("Look");
+    drawMaterialPanel(model_);
+    drawLightPanel(model_);
+    drawColorPanel(display_, settings_);
+    ImGui::End();
+    drawHud(model_, hud_);
+}
+
+void Viewer::collectMessages() {
+    if (!model_.isOpen()) return;
+    for (const std::string& message : model_.session().takeMessages()) {
+        std::cerr << "opal-view: " << message << '\n';
+        hud_.message = message;
+        if (message.starts_with("error: ") && renderError_.empty()) renderError_ = message.substr(7);
+    }
+}
+
+namespace {
+
+bool sameFrame(const PictureTag& a, const PictureTag& b) {
+    return a.passes == b.passes && a.syncs == b.syncs && a.settings == b.settings;
+}
+
+}  // namespace
+
+PictureTag Viewer::currentTag() const {
+    const auto stats = model_.session().delegate().renderStats();
+    const auto passes = stats.find("passes");
+    const int* count = passes == stats.end() ? nullptr : std::get_if<int>(&passes->second);
+    PictureTag tag;
+    tag.passes = count ? *count : 0;
+    tag.syncs = model_.session().status().syncs;
+    tag.settings = settings_.version;
+    return tag;
+}
+
+void Viewer::refreshPicture() {
+    if (!model_.isOpen()) return;
+    showConverted();
+    // Read before the buffer is: a settled session writes nothing more into it, and a
+    // sync's restart has reset the pass count by the time its status is published.
+    const bool settled = model_.settled();
+    const int applied = model_.session().status().applied;
+    PictureTag tag = currentTag();
+    tag.applied = applied;
+    tag.settled = settled;
+    const Clock::time_point now = Clock::now();
+    const bool newEdit = tag.passes >= 1 && tag.applied > requested_.applied;
+    const bool due = settled ? !(sameFrame(tag, requested_) && requested_.settled)
+                             : newEdit || (!sameFrame(tag, requested_) && now - lastPicture_ >= RefineInterval);
+    if (!due) return;
+    PictureRequest request{&model_.session().buffer(settings_.aov), settings_.aov, display_.display(), display_.view(),
+                           settings_.exposure, tag, !settled};
+    if (!converter_.request(std::move(request))) return;
+    requested_ = tag;
+    lastPicture_ = now;
+}
+
+void Viewer::showConverted() {
+    std::optional<ConvertedPicture> done = converter_.take();
+    if (!done) return;
+    if (!done->error.empty()) hud_.message = "error: " + done->error;
+    else if (!done->image.empty()) picture_.upload(done->image);
+    shown_ = done->tag;
+    // A pass of the frame the newest sync started: the picture shows that edit.
+    if (shown_.passes >= 1 && shown_.applied > shownApplied_) {
+        shownApplied_ = shown_.applied;
+        if (measure_) measure_->shown(shownApplied_, Clock::now());
+    }
+}
+
+bool Viewer::pictureSettled() { return model_.settled() && shown_.settled && sameFrame(currentTag(), shown_); }
+
+void Viewer::beginMeasure() { measure_.emplace(Clock::now()); }
+
+std::string Viewer::endMeasure() {
+    const std::string summary = measure_ ? measure_->summary(Clock::now()) : "";
+    measure_.reset();
+    return summary;
+}
+
+std::string Viewer::takeRenderError() {
+    std::string error;
+    error.swap(renderError_);
+    return error;
+}
+
+void Viewer::setDisplayView(const std::string& display, const std::string& view) {
+    display_.setDisplayView(display, view);
+    ++settings_.version;
+}
+
+void Viewer::setExposure(double stops) {
+    settings_.exposure = stops;
+    ++settings_.version;
+}
+
+void Viewer::setAov(const std::string& aov) {
+    if (!hd::findAov(aov)) throw Error("unknown AOV '" + aov + "' (AOVs: " + hd::aovNameList() + ")");
+    settings_.aov = aov;
+    ++settings_.version;
+}
+
+void Viewer::requestScreenshot(const std::filesystem::path& file) {
+    if (file.extension() != ".png") throw Error("screenshot " + file.string() + ": the file must end in .png");
+    const std::filesystem::path folder = std::filesystem::absolute(file).parent_path();
+    if (!std::filesystem::is_directory(folder))
+        throw Error("screenshot " + file.string() + ": the folder " + folder.string() + " does not exist");
+    screenshot_ = file;
+}
+
+void Viewer::renderEveryAov() {
+    everyAov_ = true;
+    model_.setRenderedAovs({});  // now, so that the model is not settled until they are rendered
+}
+
+void Viewer::saveExr(const std::filesystem::path& file) {
+    std::vector<std::string> warnings;
+    const ColorSpaceIdentity space = display_.config().workingSpaceIdentity(&warnings);
+    const ExrMetadata metadata = {
+        {"scene", std::filesystem::absolute(model_.file()).lexically_normal().string()},
+        {"alpha", "premultiplied: R, G, B are radiance times A (OpenEXR convention)"},
+        {"viewer", "opal-view"}};
+    writeExr(file, model_.session().buffers().exrLayers(), space, metadata, ExrOptions{}, &warnings);
+    for (const std::string& warning : warnings) std::cerr << "opal-view: warning: " << warning << '\n';
+    std::cout << "opal-view: wrote " << file.string() << std::endl;
+    everyAov_ = false;
+}
+
+}  // namespace opal::view

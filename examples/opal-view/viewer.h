@@ -1,0 +1,76 @@
+// The viewer: a window showing the newest picture of the open scene with the panels over
+// it, frame after frame, until the window closes or a script quits. The interface never
+// waits for the renderer: edits go to the render session's worker, and each frame shows
+// whatever the AOV buffer holds (converted again only when it changed).
+#pragma once
+
+#include "examples/opal-view/core/display_picture.h"
+#include "examples/opal-view/core/edit_latency.h"
+#include "examples/opal-view/core/picture_converter.h"
+#include "examples/opal-view/core/renderer_loader.h"
+#include "examples/opal-view/core/script_runner.h"
+#include "examples/opal-view/core/viewer_model.h"
+#include "examples/opal-view/display_settings.h"
+#include "examples/opal-view/hud.h"
+#include "examples/opal-view/imgui_layer.h"
+#include "examples/opal-view/picture_texture.h"
+#include "examples/opal-view/view_options.h"
+#include "examples/opal-view/window.h"
+
+#include <chrono>
+#include <optional>
+
+namespace opal::view {
+
+class Viewer final : public ScriptHost {
+public:
+    // Loads the renderer, opens the window and the scene; throws opal::Error.
+    Viewer(const ViewOptions& options, std::vector<ScriptAction> script);
+
+    // Until the window closes or the script quits; throws opal::Error when a script
+    // action fails ("FILE:LINE: ...").
+    void run();
+
+    ViewerModel& model() override { return model_; }
+    void open(const std::filesystem::path& file) override;
+    void setDisplayView(const std::string& display, const std::string& view) override;
+    void setExposure(double stops) override;
+    void setAov(const std::string& aov) override;
+    bool pictureSettled() override;
+    std::string takeRenderError() override;
+    void requestScreenshot(const std::filesystem::path& file) override;
+    void renderEveryAov() override;
+    void saveExr(const std::filesystem::path& file) override;
+    void quit() override { quit_ = true; }
+    void beginMeasure() override;
+    std::string endMeasure() override;
+
+private:
+    void frame();
+    void drawInterface();
+    void collectMessages();
+    void refreshPicture();
+    void showConverted();
+    // The frame the buffers hold now (passes, syncs, display settings).
+    PictureTag currentTag() const;
+
+    LoadedRenderer renderer_;  // first: outlives the session that renders with it
+    Window window_;
+    ImGuiLayer imgui_;
+    PictureTexture picture_;
+    DisplayPicture display_;  // the display and view chosen (the converter has its own)
+    DisplaySettings settings_;
+    std::optional<ScriptRunner> script_;
+    std::optional<std::filesystem::path> screenshot_;
+    HudFigures hud_;
+    std::string renderError_;
+    PictureTag requested_, shown_;
+    int shownApplied_ = 0;                 // the newest submission a shown picture holds
+    std::optional<EditLatency> measure_;   // while a script's drag runs
+    bool quit_ = false, everyAov_ = false;
+    std::chrono::steady_clock::time_point lastPicture_, lastFrame_;
+    ViewerModel model_;  // its render session goes before everything above
+    PictureConverter converter_;  // last: stops reading the session's buffers first
+};
+
+}  // namespace opal::view

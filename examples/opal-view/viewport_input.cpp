@@ -1,0 +1,50 @@
+#include "examples/opal-view/viewport_input.h"
+
+#include "examples/opal-view/core/edited_scene.h"
+#include "examples/opal-view/core/pointer_gestures.h"
+
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+namespace opal::view {
+namespace {
+
+Pointer pointerOf(const ImGuiIO& io) {
+    Pointer pointer;
+    pointer.x = io.MousePos.x;
+    pointer.y = io.MousePos.y;
+    pointer.dx = io.MouseDelta.x;
+    pointer.dy = io.MouseDelta.y;
+    pointer.wheel = io.MouseWheel;
+    pointer.left = io.MouseDown[ImGuiMouseButton_Left];
+    pointer.middle = io.MouseDown[ImGuiMouseButton_Middle];
+    pointer.right = io.MouseDown[ImGuiMouseButton_Right];
+    pointer.alt = io.KeyAlt;
+    pointer.width = io.DisplaySize.x;
+    pointer.height = io.DisplaySize.y;
+    return pointer;
+}
+
+void dragSelectedLight(ViewerModel& model, const Pointer& pointer) {
+    if (!model.selectedLight) return;
+    const hd::LightDesc& light = model.light(*model.selectedLight);
+    if (light.kind != hd::LightKind::Sphere) return;  // point, sphere and spot lights
+    if (const auto position = lightGesture(model.camera, pointer, lightPosition(light), model.bounds().center))
+        model.moveLight(*model.selectedLight, *position);
+}
+
+}  // namespace
+
+void handleViewportInput(ViewerModel& model) {
+    const ImGuiIO& io = ImGui::GetIO();
+    if (!io.WantCaptureKeyboard) {
+        if (ImGui::IsKeyPressed(GLFW_KEY_F, false)) model.frameAll();
+        if (ImGui::IsKeyPressed(GLFW_KEY_R, false)) model.resetCamera();
+    }
+    if (io.WantCaptureMouse || io.DisplaySize.x <= 0.0f || io.DisplaySize.y <= 0.0f) return;
+    const Pointer pointer = pointerOf(io);
+    cameraGesture(model.camera, pointer);
+    dragSelectedLight(model, pointer);
+}
+
+}  // namespace opal::view

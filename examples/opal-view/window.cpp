@@ -1,0 +1,61 @@
+#include "examples/opal-view/window.h"
+
+#include "schema/error.h"
+
+#include <glad/gl.h>
+#include <GLFW/glfw3.h>
+
+namespace opal::view {
+namespace {
+
+std::string glfwProblem() {
+    const char* description = nullptr;
+    glfwGetError(&description);
+    return description ? description : "no description";
+}
+
+}  // namespace
+
+Window::Window(int width, int height, const std::string& title) {
+    if (!glfwInit()) throw Error("cannot open a window: " + glfwProblem() + " (without a display, run under xvfb-run)");
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    window_ = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
+    if (!window_) {
+        const std::string problem = glfwProblem();
+        glfwTerminate();
+        throw Error("cannot create an OpenGL 3.3 core window: " + problem);
+    }
+    glfwMakeContextCurrent(window_);
+    glfwSwapInterval(1);
+    if (!gladLoadGL(glfwGetProcAddress)) {
+        glfwDestroyWindow(window_);
+        glfwTerminate();
+        throw Error("cannot load the OpenGL 3.3 core functions");
+    }
+}
+
+Window::~Window() {
+    glfwDestroyWindow(window_);
+    glfwTerminate();
+}
+
+bool Window::closeRequested() const { return glfwWindowShouldClose(window_); }
+
+void Window::requestClose() { glfwSetWindowShouldClose(window_, GLFW_TRUE); }
+
+void Window::setTitle(const std::string& title) { glfwSetWindowTitle(window_, title.c_str()); }
+
+std::pair<int, int> Window::framebufferSize() const {
+    int width = 0, height = 0;
+    glfwGetFramebufferSize(window_, &width, &height);
+    return {width, height};
+}
+
+void Window::swapBuffers() { glfwSwapBuffers(window_); }
+
+void Window::pollEvents() { glfwPollEvents(); }
+
+}  // namespace opal::view

@@ -1,0 +1,34 @@
+// The viewer's window: GLFW with an OpenGL 3.3 core context (forward compatible), its
+// functions loaded with glad, swap interval 1. HiDPI: the framebuffer size, not the window
+// size, is what the picture is rendered at.
+#pragma once
+
+#include <string>
+#include <utility>
+
+struct GLFWwindow;
+
+namespace opal::view {
+
+class Window {
+public:
+    // Throws opal::Error with GLFW's description when there is no display (DISPLAY unset:
+    // run under xvfb-run on a machine without one), no OpenGL 3.3 core, or no loader.
+    Window(int width, int height, const std::string& title);
+    ~Window();
+    Window(const Window&) = delete;
+    Window& operator=(const Window&) = delete;
+
+    GLFWwindow* handle() const { return window_; }
+    bool closeRequested() const;
+    void requestClose();
+    void setTitle(const std::string& title);
+    std::pair<int, int> framebufferSize() const;
+    void swapBuffers();
+    void pollEvents();
+
+private:
+    GLFWwindow* window_ = nullptr;
+};
+
+}  // namespace opal::view
