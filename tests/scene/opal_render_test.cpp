@@ -10,6 +10,8 @@
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
+#include <array>
+
 #include <sys/wait.h>
 
 #include <algorithm>
@@ -196,6 +198,47 @@ TEST(OpalRender, RendersTheCandleDemoOnABakedCandle) {
     // Lit, though not everywhere: at 512 samples with 1% of the Haar coefficients kept, the
     // compressed transfer leaves dark blotches (a property of such a small bake).
     EXPECT_GT(lit, candle / 10);
+
+    // What a person sees: the flame (the emitter, primId 2 after the candle and the wick) is
+    // the brightest thing in the picture, and the wax glows more toward the top.
+    const auto channels = [&](const std::string& layer) {
+        const std::string prefix = layer.empty() ? "" : layer + ".";
+        return std::array<int, 3>{spec.channelindex(prefix + "R"), spec.channelindex(prefix + "G"),
+                                  spec.channelindex(prefix + "B")};
+    };
+    const std::array<int, 3> color = channels(""), subsurface = channels("subsurface");
+    const auto luminance = [](const float* px, const std::array<int, 3>& c) { return px[c[0]] + px[c[1]] + px[c[2]]; };
+    std::size_t brightest = 0;
+    for (std::size_t p = 0; p < std::size_t(spec.width) * spec.height; ++p)
+        if (luminance(&pixels[p * spec.nchannels], color) > luminance(&pixels[brightest * spec.nchannels], color))
+            brightest = p;
+    EXPECT_EQ(pixels[brightest * spec.nchannels + id], 2.0f) << "the brightest pixel is not the flame";
+    int top = spec.height, bottom = -1;
+    for (int y = 0; y < spec.height; ++y)
+        for (int x = 0; x < spec.width; ++x)
+            if (pixels[(std::size_t(y) * spec.width + x) * spec.nchannels + id] == 0.0f) {
+                top = std::min(top, y);
+                bottom = std::max(bottom, y);
+            }
+    ASSERT_GT(bottom - top, 12);
+    const auto bandMean = [&](int y0, int y1) {
+        double sum = 0.0;
+        int n = 0;
+        for (int y = y0; y < y1; ++y)
+            for (int x = 0; x < spec.width; ++x) {
+                const float* px = &pixels[(std::size_t(y) * spec.width + x) * spec.nchannels];
+                if (px[id] != 0.0f) continue;
+                sum += luminance(px, subsurface);
+                ++n;
+            }
+        return n ? sum / n : 0.0;
+    };
+    const int third = (bottom - top + 1) / 3;
+    const double upper = bandMean(top, top + third), middle = bandMean(top + third, top + 2 * third),
+                 lower = bandMean(top + 2 * third, bottom + 1);
+    EXPECT_GT(upper, middle);
+    EXPECT_GT(middle, lower);
+    std::printf("candle subsurface by thirds, top to bottom: %.4g %.4g %.4g\n", upper, middle, lower);
 }
 
 TEST(OpalRender, SelectedAovsOnly) {
