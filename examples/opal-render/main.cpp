@@ -2,6 +2,7 @@
 // the plugin registry into a scene-linear multi-layer EXR, plus an optional display-referred
 // preview. Exit codes: 0 success, 1 error (nothing written), 2 bad command line.
 #include "delegate/hd/aov.h"
+#include "examples/opal-render/frame_range.h"
 #include "examples/opal-render/render_command.h"
 #include "examples/scene/scene_material.h"
 #include "schema/error.h"
@@ -28,7 +29,8 @@ std::vector<std::string> presetNames() {
     return names;
 }
 
-void defineOptions(CLI::App& app, opal::render::RenderOptions& options, std::string& resolution) {
+void defineOptions(CLI::App& app, opal::render::RenderOptions& options, std::string& resolution,
+                   std::string& frameRange, int& frameStep) {
     app.add_option("scene", options.scene, "Scene layer (.usda) to render")->required()->check(CLI::ExistingFile);
     app.add_option("-o,--output", options.output, "Scene-linear multi-layer EXR to write")->required();
     auto* preview = app.add_option("--preview", options.preview, "Display-referred 8-bit preview (.png, .jpg)");
@@ -42,8 +44,13 @@ void defineOptions(CLI::App& app, opal::render::RenderOptions& options, std::str
     app.add_flag("--float", options.floatPixels, "Write 32-bit float color layers (default: half)");
     app.add_option("--camera", options.camera, "Camera prim path (default: the scene's)");
     app.add_option("--delegate", options.delegate, "Renderer plugin type (default: the registry's default)");
-    app.add_option("--time", options.time, "Scene time in seconds for time-varying lights (flicker; default 0)")
-        ->check(CLI::Range(-1.0e9, 1.0e9));
+    auto* time = app.add_option("--time", options.time,
+                                "Scene time in seconds for time-varying lights (flicker; default 0)")
+                     ->check(CLI::Range(-1.0e9, 1.0e9));
+    auto* frames = app.add_option("--frames", frameRange,
+                                  "Render time codes START:END (the layer's timeCodesPerSecond) to OUT.####.exr")
+                       ->excludes(time);
+    app.add_option("--step", frameStep, "Time codes between frames of --frames (default 1)")->needs(frames);
 }
 
 }  // namespace
@@ -51,17 +58,19 @@ void defineOptions(CLI::App& app, opal::render::RenderOptions& options, std::str
 int main(int argc, char** argv) {
     CLI::App app{"opal-render: render a USDA scene of baked translucent assets to EXR"};
     opal::render::RenderOptions options;
-    std::string resolution;
-    defineOptions(app, options, resolution);
+    std::string resolution, frameRange;
+    int frameStep = 1;
+    defineOptions(app, options, resolution, frameRange, frameStep);
     try {
         app.parse(argc, argv);
         if (!resolution.empty()) options.resolution = opal::scene::parseResolution(resolution);
+        if (!frameRange.empty()) options.frames = opal::render::parseFrameRange(frameRange, frameStep);
     } catch (const CLI::CallForHelp& e) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
         app.exit(e);
         return ExitUsage;
-    } catch (const opal::Error& e) {  // --resolution
+    } catch (const opal::Error& e) {  // --resolution, --frames
         std::cerr << "opal-render: " << e.what() << "\nRun with --help for more information.\n";
         return ExitUsage;
     }

@@ -6,6 +6,7 @@
 #include "delegate/hd/render_to_convergence.h"
 #include "examples/opal-render/aov_buffers.h"
 #include "examples/opal-render/frame_files.h"
+#include "examples/opal-render/frame_range.h"
 #include "examples/opal-render/stage_timer.h"
 #include "examples/scene/material_override.h"
 #include "examples/scene/render_setup.h"
@@ -60,34 +61,46 @@ RenderDelegateHandle createDelegate(const RendererPluginHandle& plugin, const sc
     return delegate;
 }
 
-// Syncs the scene into a render index on `delegate` and renders `buffers` through it;
-// what the delegate warned about on the way goes to `warnings`.
-void renderFrame(hd::RenderDelegate& delegate, scene::Scene scene, const scene::RenderSetup& setup, double time,
-                 const AovBuffers& buffers, StageTimer& timer, std::ostream& warnings) {
-    scene::UsdaSceneSource source(std::move(scene));
-    hd::RenderIndex index(delegate);
-    source.populate(index);
-    source.setTime(time, index);
-    try {
-        index.sync();
-    } catch (const Error& e) {
-        throw Error(source.scene().file.string() + ": " + e.what());
+// The scene in a render index on one delegate, rendered at any scene time: between frames
+// only what the time changes (flickering lights) is synced again.
+class SceneRender {
+public:
+    SceneRender(hd::RenderDelegate& delegate, scene::Scene scene)
+        : delegate_(delegate), source_(std::move(scene)), index_(delegate) {
+        source_.populate(index_);
     }
-    timer.lap("sync");
-    const std::unique_ptr<hd::RenderPass> pass = delegate.createRenderPass(index);
-    hd::RenderPassState state;
-    state.camera = setup.camera;
-    state.width = setup.resolution.width;
-    state.height = setup.resolution.height;
-    hd::renderToConvergence(delegate, *pass, state, buffers.bindings());
-    for (const std::string& warning : delegate.takeWarnings()) warnings << "opal-render: warning: " << warning << '\n';
-    timer.lap("render");
-}
+
+    void render(double seconds, const scene::RenderSetup& setup, const AovBuffers& buffers, StageTimer& timer,
+                std::ostream& warnings) {
+        source_.setTime(seconds, index_);
+        try {
+            index_.sync();
+        } catch (const Error& e) {
+            throw Error(source_.scene().file.string() + ": " + e.what());
+        }
+        timer.lap("sync");
+        if (!pass_) pass_ = delegate_.createRenderPass(index_);
+        hd::RenderPassState state;
+        state.camera = setup.camera;
+        state.width = setup.resolution.width;
+        state.height = setup.resolution.height;
+        hd::renderToConvergence(delegate_, *pass_, state, buffers.bindings());
+        for (const std::string& warning : delegate_.takeWarnings())
+            warnings << "opal-render: warning: " << warning << '\n';
+        timer.lap("render");
+    }
+
+private:
+    hd::RenderDelegate& delegate_;
+    scene::UsdaSceneSource source_;
+    hd::RenderIndex index_;
+    std::unique_ptr<hd::RenderPass> pass_;
+};
 
 // The delegate's render settings as the delegate holds them ("opal:tileSize" ->
 // "opal/tileSize" in the header), then what describes the run.
 ExrMetadata frameMetadata(const RenderOptions& options, const scene::RenderSetup& setup,
-                          const RendererPluginHandle& plugin, const hd::RenderDelegate& delegate) {
+                          const RendererPluginHandle& plugin, const hd::RenderDelegate& delegate, double seconds) {
     ExrMetadata metadata;
     for (const auto& [key, value] : delegate.renderSettings()) {
         const std::string name = key.starts_with("opal:") ? key.substr(5) : key;
@@ -100,7 +113,7 @@ ExrMetadata frameMetadata(const RenderOptions& options, const scene::RenderSetup
     metadata.emplace_back("alpha", "premultiplied: R, G, B are radiance times A (OpenEXR convention)");
     metadata.emplace_back("scene", std::filesystem::absolute(options.scene).lexically_normal().string());
     metadata.emplace_back("camera", setup.camera);
-    metadata.emplace_back("time", float(options.time));
+    metadata.emplace_back("time", float(seconds));  // the scene time, seconds
     metadata.emplace_back("resolution",
                           std::to_string(setup.resolution.width) + "x" + std::to_string(setup.resolution.height));
     metadata.emplace_back("material", options.material.value_or("scene"));
@@ -109,8 +122,11 @@ ExrMetadata frameMetadata(const RenderOptions& options, const scene::RenderSetup
 }
 
 std::string summary(const RenderOptions& options, const scene::RenderSetup& setup, const RendererPluginHandle& plugin,
-                    const StageTimer& timer) {
-    return "opal-render: " + options.output.string() + " " + std::to_string(setup.resolution.width) + "x" +
+                    const StageTimer& timer, std::size_t frames) {
+    const std::string what = options.frames ? std::to_string(frames) + " frames " +
+                                                  numberedPath(options.output, options.frames->start).string() + ".."
+                                            : options.output.string();
+    return "opal-render: " + what + " " + std::to_string(setup.resolution.width) + "x" +
            std::to_string(setup.resolution.height) + " through <" + setup.camera + "> with " +
            plugin.info().displayName + ": " + timer.summary();
 }
@@ -119,10 +135,17 @@ std::string summary(const RenderOptions& options, const scene::RenderSetup& setu
 
 std::string renderScene(const RenderOptions& options, std::ostream& warnings) {
     StageTimer timer;
-    const FrameFiles files{options.output, options.preview};
-    checkFrameFiles(files);
+    // Each frame's time in seconds and its files, all checked before any work.
+    std::vector<std::pair<double, FrameFiles>> frames;
     scene::AssetCache assets;
     scene::Scene scene = loadScene(options, assets, warnings);
+    if (!options.frames) frames.push_back({options.time, FrameFiles{options.output, options.preview}});
+    for (const int frame : options.frames ? framesOf(*options.frames) : std::vector<int>{}) {
+        std::optional<std::filesystem::path> preview;
+        if (options.preview) preview = numberedPath(*options.preview, frame);
+        frames.push_back({frame / scene.timeCodesPerSecond, FrameFiles{numberedPath(options.output, frame), preview}});
+    }
+    for (const auto& [seconds, files] : frames) checkFrameFiles(files);
     const scene::RenderSetup setup = scene::chooseRenderSetup(scene, {options.camera, options.resolution});
     const ColorConfig config = outputColorConfig(scene);
     const std::optional<DisplayTransform> display = previewTransform(config, options);
@@ -133,17 +156,19 @@ std::string renderScene(const RenderOptions& options, std::ostream& warnings) {
     timer.lap("delegate");
 
     const AovBuffers buffers(options.aovs, display.has_value());
-    renderFrame(*delegate, std::move(scene), setup, options.time, buffers, timer, warnings);
-
-    std::vector<std::string> writeWarnings;
-    FrameContent content{buffers.exrLayers(), config.workingSpaceIdentity(&writeWarnings),
-                         frameMetadata(options, setup, plugin, *delegate), ExrOptions{}, std::nullopt};
-    if (options.floatPixels) content.options.colorPixelType = ExrPixelType::Float;
-    if (display) content.previewImage = display->apply(buffers.color());
-    writeFrameFiles(files, content, &writeWarnings);
-    for (const std::string& warning : writeWarnings) warnings << "opal-render: warning: " << warning << '\n';
-    timer.lap("write");
-    return summary(options, setup, plugin, timer);
+    SceneRender render(*delegate, std::move(scene));
+    for (const auto& [seconds, files] : frames) {
+        render.render(seconds, setup, buffers, timer, warnings);
+        std::vector<std::string> writeWarnings;
+        FrameContent content{buffers.exrLayers(), config.workingSpaceIdentity(&writeWarnings),
+                             frameMetadata(options, setup, plugin, *delegate, seconds), ExrOptions{}, std::nullopt};
+        if (options.floatPixels) content.options.colorPixelType = ExrPixelType::Float;
+        if (display) content.previewImage = display->apply(buffers.color());
+        writeFrameFiles(files, content, &writeWarnings);
+        for (const std::string& warning : writeWarnings) warnings << "opal-render: warning: " << warning << '\n';
+        timer.lap("write");
+    }
+    return summary(options, setup, plugin, timer, frames.size());
 }
 
 }  // namespace opal::render

@@ -23,6 +23,12 @@ struct RenderOptions {
     std::optional<std::string> camera;             // --camera /Path
     std::optional<std::string> delegate;           // --delegate TYPE: a renderer plugin type
     double time = 0.0;                             // --time SECONDS: the scene time (flicker)
+    // --frames START:END [--step S]: time codes (the layer's timeCodesPerSecond), one
+    // numbered EXR (and preview) per frame: OUT.0001.exr.
+    struct Frames {
+        int start = 0, end = 0, step = 1;
+    };
+    std::optional<Frames> frames;
 };
 
 }  // namespace opal::render

@@ -41,6 +41,7 @@ struct Scene {
     std::filesystem::path file;             // the layer, as given
     std::string upAxis = "Y";               // layer metadata upAxis: "Y" or "Z"
     std::optional<double> metersPerUnit;    // layer metadata, when authored
+    double timeCodesPerSecond = 24.0;       // layer metadata (USD's fallback 24)
     std::map<hd::SdfPath, SceneMesh> meshes;
     std::map<hd::SdfPath, SceneMaterial> materials;
     std::map<hd::SdfPath, SceneLight> lights;

@@ -112,6 +112,13 @@ void SceneReader::readLayerMetadata(const usda::Layer& layer) {
         if (scene_.upAxis != "Y" && scene_.upAxis != "Z")
             throw usda::UsdaError(up->location(), "upAxis is '" + scene_.upAxis + "', expected \"Y\" or \"Z\"");
     }
+    if (const usda::Value* rate = layer.metadata.find("timeCodesPerSecond")) {
+        scene_.timeCodesPerSecond = rate->get<usda::types::Double>("metadata 'timeCodesPerSecond'");
+        if (!(scene_.timeCodesPerSecond > 0.0) || !std::isfinite(scene_.timeCodesPerSecond))
+            throw usda::UsdaError(rate->location(), "timeCodesPerSecond is " +
+                                                        formatNumber(scene_.timeCodesPerSecond) +
+                                                        ", expected a positive number");
+    }
     if (const usda::Value* mpu = layer.metadata.find("metersPerUnit")) {
         scene_.metersPerUnit = mpu->get<usda::types::Double>("metadata 'metersPerUnit'");
         if (!(*scene_.metersPerUnit > 0.0) || !std::isfinite(*scene_.metersPerUnit))

@@ -86,6 +86,35 @@ std::vector<std::string> channelNames(const OIIO::ImageSpec& spec) {
     return names;
 }
 
+TEST(OpalRender, FramesWriteOneNumberedFilePairPerTimeCode) {
+    const test::SceneDir dir;
+    dir.writeSphereAsset("sphere");
+    std::string scene = litScene("2000");
+    const std::string units = "    metersPerUnit = 0.001\n";
+    scene.replace(scene.find(units), units.size(), units + "    timeCodesPerSecond = 10\n");
+    dir.write("scene.usda", scene);
+    const ProcessResult run = runOpalRender(dir, "'" + (dir / "scene.usda").string() + "' -o '" +
+                                                     (dir / "seq.exr").string() + "' --preview '" +
+                                                     (dir / "seq.png").string() + "' --frames 1:5 --step 2");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    for (int frame : {1, 3, 5}) {
+        const std::string stem = "seq.000" + std::to_string(frame);
+        ASSERT_TRUE(std::filesystem::exists(dir / (stem + ".png"))) << stem;
+        auto in = OIIO::ImageInput::open((dir / (stem + ".exr")).string());
+        ASSERT_TRUE(in) << stem;
+        EXPECT_FLOAT_EQ(in->spec().get_float_attribute("opal/time"), float(frame) / 10.0f) << stem;
+    }
+    EXPECT_FALSE(std::filesystem::exists(dir / "seq.0002.exr"));
+    EXPECT_FALSE(std::filesystem::exists(dir / "seq.exr"));
+
+    const ProcessResult backwards =
+        runOpalRender(dir, "'" + (dir / "scene.usda").string() + "' -o x.exr --frames 5:1");
+    EXPECT_EQ(backwards.exitCode, 2);
+    EXPECT_NE(backwards.err.find("--frames '5:1': END is before START"), std::string::npos) << backwards.err;
+    EXPECT_EQ(runOpalRender(dir, "'" + (dir / "scene.usda").string() + "' -o x.exr --frames 1:2 --time 3").exitCode, 2);
+    EXPECT_EQ(runOpalRender(dir, "'" + (dir / "scene.usda").string() + "' -o x.exr --frames 1-2").exitCode, 2);
+}
+
 TEST(OpalRender, WritesALitMultiLayerExrAndAPreview) {
     const test::SceneDir dir;
     dir.writeSphereAsset("sphere");
