@@ -1,6 +1,7 @@
 #include "delegate/relight/shadow_field_light.h"
 
 #include "delegate/relight/light_emission.h"
+#include "delegate/relight/light_flicker.h"
 #include "raytrace/ray_scene.h"
 #include "schema/error.h"
 
@@ -99,10 +100,6 @@ double ShadowFieldLight::shadowReach(const Imath::V3d& p, const Imath::V3d& d) c
     const double disc = b * b - c;
     if (disc >= 0.0 && -b - std::sqrt(disc) > 0.0) return -b - std::sqrt(disc);
     return std::max(0.0, -b);
-}
-
-Imath::V3d ShadowFieldLight::irradiance(const Imath::V3d& point, const Imath::V3d& normal) const {
-    return field_->lookup.irradiance(toLight(point), normal * rotation_.transposed()) * emission_;
 }
 
 // One lit block of texels: its irradiance and the irradiance-weighted sum of directions.

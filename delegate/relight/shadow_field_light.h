@@ -28,7 +28,6 @@
 #include "delegate/hd/scene_delegate.h"
 #include "delegate/relight/analytic_light.h"
 #include "delegate/relight/irradiance.h"
-#include "delegate/relight/light_flicker.h"
 #include "schema/asset/cube_map_cosine.h"
 #include "schema/asset/shadow_field_lookup.h"
 
@@ -68,9 +67,6 @@ public:
     // LightArrival (mu_eff, E / mu_eff). Shadow rays start `offset` along the normal; scene
     // may be null (no shadows). Parallel over samples.
     std::vector<LightArrival> arrivals(const PlacedSamples& samples, const RayScene* scene, float offset) const;
-
-    // The unshadowed E(x) for a world point and unit normal: the field's irradiance, scaled.
-    Imath::V3d irradiance(const Imath::V3d& point, const Imath::V3d& normal) const;
 
     // The sphere light the specular layer uses for this light.
     const AnalyticLight& highlight() const { return highlight_; }
