@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <system_error>
+#include <utility>
 
 // Both relative to the directory of the executable; set by plugin/CMakeLists.txt.
 #ifndef OPAL_BUILD_PLUGIN_DIR
@@ -48,6 +49,12 @@ std::vector<fs::path> defaultSearchPaths(const fs::path& executable) {
         if (fs::is_directory(candidate, ec) && std::find(paths.begin(), paths.end(), candidate) == paths.end())
             paths.push_back(candidate);
     }
+    return paths;
+}
+
+std::vector<fs::path> hostSearchPaths(const fs::path& executable) {
+    std::vector<fs::path> paths = searchPathsFromEnvironment();
+    for (fs::path& path : defaultSearchPaths(executable)) paths.push_back(std::move(path));
     return paths;
 }
 

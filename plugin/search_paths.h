@@ -1,10 +1,11 @@
 // Where hosts look for plugin manifests. The registry itself reads no environment: a host
-// gathers its search paths with these helpers once, at start-up, and passes them in:
+// gathers its search paths once, at start-up, and passes them in:
 //
-//     auto paths = searchPathsFromEnvironment();                 // $OPAL_PLUGINPATH first,
-//     for (auto& p : defaultSearchPaths(executablePath()))       // so users can override
-//         paths.push_back(p);                                    // the shipped plugins
-//     PluginRegistry registry(paths);
+//     PluginRegistry registry(hostSearchPaths(executablePath()));
+//
+// $OPAL_PLUGINPATH comes first, so users can override the shipped plugins; then the
+// plugins next to the program (the build tree's, or the install prefix's), so an
+// installed program needs no environment to find Opal's delegate.
 //
 // Each entry is a plugInfo.json file or a directory holding one.
 #pragma once
@@ -28,5 +29,8 @@ std::filesystem::path executablePath();
 // <build>/lib/opal/plugins seen from <build>/bin, and the installed
 // <prefix>/<libdir>/opal/plugins seen from <prefix>/<bindir>.
 std::vector<std::filesystem::path> defaultSearchPaths(const std::filesystem::path& executable);
+
+// What a host at `executable` searches: $OPAL_PLUGINPATH, then defaultSearchPaths.
+std::vector<std::filesystem::path> hostSearchPaths(const std::filesystem::path& executable);
 
 }  // namespace opal

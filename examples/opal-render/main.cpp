@@ -1,10 +1,13 @@
 // opal-render: renders a scene layer (examples/SCENES.md) through a render delegate found by
 // the plugin registry into a scene-linear multi-layer EXR, plus an optional display-referred
 // preview. Exit codes: 0 success, 1 error (nothing written), 2 bad command line.
+// --list-delegates prints what the plugin registry finds instead, and exits 0.
 #include "delegate/hd/aov.h"
 #include "examples/opal-render/frame_range.h"
+#include "examples/opal-render/delegate_list.h"
 #include "examples/opal-render/render_command.h"
 #include "examples/scene/scene_material.h"
+#include "plugin/search_paths.h"
 #include "schema/error.h"
 
 #include <CLI/CLI.hpp>
@@ -44,6 +47,10 @@ void defineOptions(CLI::App& app, opal::render::RenderOptions& options, std::str
     app.add_flag("--float", options.floatPixels, "Write 32-bit float color layers (default: half)");
     app.add_option("--camera", options.camera, "Camera prim path (default: the scene's)");
     app.add_option("--delegate", options.delegate, "Renderer plugin type (default: the registry's default)");
+    // Like --help, it ends parsing at once, so the scene and -o are not required with it.
+    app.add_flag_callback("--list-delegates", [] { throw CLI::Success(); },
+                          "List the renderer plugins found (and skipped manifests) and exit")
+        ->trigger_on_parse();
     auto* time = app.add_option("--time", options.time,
                                 "Scene time in seconds for time-varying lights (flicker; default 0)")
                      ->check(CLI::Range(-1.0e9, 1.0e9));
@@ -51,6 +58,16 @@ void defineOptions(CLI::App& app, opal::render::RenderOptions& options, std::str
                                   "Render time codes START:END (the layer's timeCodesPerSecond) to OUT.####.exr")
                        ->excludes(time);
     app.add_option("--step", frameStep, "Time codes between frames of --frames (default 1)")->needs(frames);
+}
+
+int listDelegates() {
+    try {
+        opal::render::listDelegates(opal::PluginRegistry(opal::hostSearchPaths(opal::executablePath())), std::cout);
+        return 0;
+    } catch (const std::exception& e) {
+        std::cerr << "opal-render: error: " << e.what() << '\n';
+        return ExitError;
+    }
 }
 
 }  // namespace
@@ -67,6 +84,8 @@ int main(int argc, char** argv) {
         if (!frameRange.empty()) options.frames = opal::render::parseFrameRange(frameRange, frameStep);
     } catch (const CLI::CallForHelp& e) {
         return app.exit(e);
+    } catch (const CLI::Success&) {  // --list-delegates
+        return listDelegates();
     } catch (const CLI::ParseError& e) {
         app.exit(e);
         return ExitUsage;

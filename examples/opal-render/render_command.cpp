@@ -46,9 +46,7 @@ scene::Scene loadScene(const RenderOptions& options, scene::AssetCache& assets, 
 }
 
 RendererPluginHandle findRenderer(const RenderOptions& options, std::ostream& warnings) {
-    std::vector<std::filesystem::path> paths = searchPathsFromEnvironment();
-    for (const std::filesystem::path& path : defaultSearchPaths(executablePath())) paths.push_back(path);
-    const PluginRegistry registry(paths);
+    const PluginRegistry registry(hostSearchPaths(executablePath()));
     for (const std::string& problem : registry.problems()) warnings << "opal-render: warning: " << problem << '\n';
     return options.delegate ? registry.createRendererPlugin(*options.delegate) : registry.defaultRendererPlugin();
 }
@@ -99,7 +97,7 @@ private:
 
 // The delegate's render settings as the delegate holds them ("opal:tileSize" ->
 // "opal/tileSize" in the header), then what describes the run.
-ExrMetadata frameMetadata(const RenderOptions& options, const scene::RenderSetup& setup,
+ExrMetadata frameMetadata(const RenderOptions& options, const scene::RenderSetup& setup, const ColorConfig& config,
                           const RendererPluginHandle& plugin, const hd::RenderDelegate& delegate, double seconds) {
     ExrMetadata metadata;
     for (const auto& [key, value] : delegate.renderSettings()) {
@@ -118,6 +116,8 @@ ExrMetadata frameMetadata(const RenderOptions& options, const scene::RenderSetup
                           std::to_string(setup.resolution.width) + "x" + std::to_string(setup.resolution.height));
     metadata.emplace_back("material", options.material.value_or("scene"));
     metadata.emplace_back("delegate", plugin.info().displayName + " (" + plugin.info().typeName + ")");
+    // Which file the colours are in: $OCIO, the scene's, or the one shipped with this program.
+    metadata.emplace_back("colorConfig", std::filesystem::absolute(config.file()).lexically_normal().string());
     return metadata;
 }
 
@@ -161,7 +161,7 @@ std::string renderScene(const RenderOptions& options, std::ostream& warnings) {
         render.render(seconds, setup, buffers, timer, warnings);
         std::vector<std::string> writeWarnings;
         FrameContent content{buffers.exrLayers(), config.workingSpaceIdentity(&writeWarnings),
-                             frameMetadata(options, setup, plugin, *delegate, seconds), ExrOptions{}, std::nullopt};
+                             frameMetadata(options, setup, config, plugin, *delegate, seconds), ExrOptions{}, std::nullopt};
         if (options.floatPixels) content.options.colorPixelType = ExrPixelType::Float;
         if (display) content.previewImage = display->apply(buffers.color());
         writeFrameFiles(files, content, &writeWarnings);

@@ -427,5 +427,42 @@ TEST(OpalRender, BadCommandLineExitsTwo) {
     EXPECT_FALSE(std::filesystem::exists("x.exr"));
 }
 
+// --list-delegates, from the build tree: the delegate plugin next to opal-render, as its
+// manifest (delegate/CMakeLists.txt) declares it, and nothing skipped.
+TEST(OpalRender, ListDelegatesShowsTheDelegateItWouldLoad) {
+    const test::SceneDir dir;
+    unsetenv("OPAL_PLUGINPATH");
+    const ProcessResult run = runOpalRender(dir, "--list-delegates");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const std::string plugins = std::filesystem::path(OPAL_BINARY_DIR "/lib/opal/plugins").lexically_normal().string();
+    const std::string expected = "  OpalRendererPlugin\n    display name: Opal\n    priority: 100\n    library: " +
+                                 plugins + "/opalDelegate/opalDelegate.so\n    manifest: " + plugins +
+                                 "/opalDelegate/plugInfo.json\n";
+    EXPECT_NE(run.out.find(expected), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("skipped: none"), std::string::npos) << run.out;
+}
+
+// A broken manifest on $OPAL_PLUGINPATH is listed as skipped with the reason (file:line:
+// column), and a missing search path too; the shipped delegate is still found.
+TEST(OpalRender, ListDelegatesShowsSkippedManifestsAndWhy) {
+    const test::SceneDir dir;
+    std::filesystem::create_directories(dir / "broken");
+    dir.write("broken/plugInfo.json", "{\n    \"Plugins\": [\n");
+    const std::string path = (dir / "broken").string() + ":" + (dir / "missing").string();
+    setenv("OPAL_PLUGINPATH", path.c_str(), 1);
+    const ProcessResult run = runOpalRender(dir, "--list-delegates");
+    unsetenv("OPAL_PLUGINPATH");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const std::size_t skipped = run.out.find("skipped:\n");
+    ASSERT_NE(skipped, std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("  " + (dir / "broken/plugInfo.json").string() + ":3:1: JSON syntax error", skipped),
+              std::string::npos)
+        << run.out;
+    EXPECT_NE(run.out.find("  " + (dir / "missing").string() + ": plugin search path does not exist", skipped),
+              std::string::npos)
+        << run.out;
+    EXPECT_LT(run.out.find("  OpalRendererPlugin\n"), skipped) << run.out;
+}
+
 }  // namespace
 }  // namespace opal::scene
