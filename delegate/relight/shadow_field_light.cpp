@@ -21,8 +21,10 @@ namespace opal {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-// Texels per side of a visibility block: one occlusion ray per lit block.
-constexpr std::uint32_t kBlockSide = 4;
+// How much coarser than the maps irradiance is formed, and the texels per side of a
+// visibility block in that layout (4 x 4 map texels: one occlusion ray per lit block).
+constexpr std::uint32_t kDecodeDivisor = 2;
+constexpr std::uint32_t kBlockSide = 2;
 
 double channelSum(const Imath::V3d& v) { return v.x + v.y + v.z; }
 
@@ -49,14 +51,17 @@ Imath::V3d emissionOf(const hd::LightDesc& desc) {
 
 }  // namespace
 
-LoadedShadowField::LoadedShadowField(ShadowField f) : field(std::move(f)), lookup(field), cosine(lookup.mapLayout()) {
+LoadedShadowField::LoadedShadowField(ShadowField f)
+    : field(std::move(f)),
+      lookup(field),
+      layout(std::max<std::uint32_t>(1, field.mapFaceSize / kDecodeDivisor)),
+      cosine(layout) {
     // The mean of I(w) over directions, from the outer shell's 24 coarsest directions
     // (enough for a highlight's strength: the far field is smooth by construction).
     const CubeMapLayout directions(2);
     for (std::uint32_t i = 0; i < directions.texels(); ++i)
         meanIntensity += lookup.farIntensity(Imath::V3d(directions.direction(i))) *
                          (directions.solidAngle(i) / (4.0 * kPi));
-    const CubeMapLayout& layout = lookup.mapLayout();
     const std::uint32_t side = std::max<std::uint32_t>(1, layout.faceSize() / kBlockSide);
     blocks = 6 * side * side;
     for (std::uint32_t k = 0; k < layout.texels(); ++k) {
@@ -111,7 +116,7 @@ struct ShadowFieldLight::Texels {
 LightArrival ShadowFieldLight::arrivalInField(const Imath::V3d& x, const Imath::V3d& n, const RayScene* scene,
                                               float offset) const {
     const Imath::V3d p = toLight(x), nl = n * rotation_.transposed();
-    const std::vector<Imath::V3f> radiance = field_->lookup.incidentRadiance(p);
+    const std::vector<Imath::V3f> radiance = field_->lookup.incidentRadiance(p, field_->layout.faceSize());
     std::vector<Texels> blocks(field_->blocks);
     for (std::uint32_t k = 0; k < radiance.size(); ++k) {
         const Imath::V3f& l = radiance[k];

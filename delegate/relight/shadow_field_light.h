@@ -45,9 +45,15 @@ class RayScene;
 struct LoadedShadowField {
     ShadowField field;
     ShadowFieldLookup lookup;
+    // Irradiance is formed on the maps averaged to half their face size (16 for the shipped
+    // 32): a quarter of the texels to synthesize and weigh, each with its exact cosine
+    // integral; what is lost is only the product of radiance and cosine varying together
+    // inside a 2 x 2 texel block.
+    CubeMapLayout layout;
     CubeMapCosineIntegral cosine;
     Imath::V3d meanIntensity{0.0};  // of the far-field point light, over all directions
-    // Per map texel: its centre direction, and its visibility block (4 x 4 texels of a face).
+    // Per texel of `layout`: its centre direction, and its visibility block (2 x 2 texels of
+    // `layout`, 4 x 4 of the maps).
     std::vector<Imath::V3f> texelDirections;
     std::vector<std::uint32_t> texelBlocks;
     std::uint32_t blocks = 0;

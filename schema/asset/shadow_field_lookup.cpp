@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <span>
+#include <string>
 
 namespace opal {
 namespace {
@@ -77,34 +78,40 @@ FieldStencil ShadowFieldLookup::stencil(const Imath::V3d& point) const {
     return s;
 }
 
-std::vector<Imath::V3f> ShadowFieldLookup::blend(std::span<const MapWeight> maps) const {
-    std::vector<float> coefficients(3 * std::size_t(mapLayout_.texels()), 0.0f);
-    const std::uint32_t faceTexels = mapLayout_.faceSize() * mapLayout_.faceSize();
+std::vector<Imath::V3f> ShadowFieldLookup::blend(std::span<const MapWeight> maps, std::uint32_t size) const {
+    // In the Mallat layout a face's coefficients of the coarser levels fill its top-left
+    // size x size corner, and their inverse transform there is the face averaged over
+    // blocks of (n / size)^2 texels, times n / size (orthonormal Haar).
+    const std::uint32_t n = mapLayout_.faceSize(), fine = n * n, coarse = size * size;
+    std::vector<float> coefficients(3 * 6 * std::size_t(coarse), 0.0f);
     std::array<bool, 6> lit{};  // faces with a kept coefficient; the others stay 0
     for (const MapWeight& m : maps) {
         for (std::uint64_t k = field_.offsets[m.map]; k < field_.offsets[m.map + 1]; ++k) {
-            lit[field_.indices[k] / faceTexels] = true;
-            for (int c = 0; c < 3; ++c)
-                coefficients[3 * std::size_t(field_.indices[k]) + c] += float(m.weight * field_.values[3 * k + c]);
+            const std::uint32_t face = field_.indices[k] / fine, within = field_.indices[k] % fine;
+            const std::uint32_t u = within % n, v = within / n;
+            if (u >= size || v >= size) continue;
+            lit[face] = true;
+            const std::size_t at = 3 * (std::size_t(face) * coarse + v * size + u);
+            for (int c = 0; c < 3; ++c) coefficients[at + c] += float(m.weight * field_.values[3 * k + c]);
         }
     }
     // The inverse transform of a face of zeros is zeros: only the lit faces are synthesized
     // (a compact emitter lights 1 to 3 faces of each map).
     for (std::uint32_t face = 0; face < 6; ++face)
         if (lit[face])
-            haarInverse2D<float>(std::span(coefficients).subspan(std::size_t(face) * faceTexels * 3, faceTexels * 3),
-                                 mapLayout_.faceSize(), 3);
+            haarInverse2D<float>(std::span(coefficients).subspan(std::size_t(face) * coarse * 3, coarse * 3), size, 3);
     // Radiance is never negative: what the truncated Haar series rings below 0 is 0.
-    std::vector<Imath::V3f> radiance(mapLayout_.texels());
+    const float scale = float(size) / float(n);
+    std::vector<Imath::V3f> radiance(6 * std::size_t(coarse));
     for (std::size_t i = 0; i < radiance.size(); ++i)
-        radiance[i] = {std::max(0.0f, coefficients[3 * i]), std::max(0.0f, coefficients[3 * i + 1]),
-                       std::max(0.0f, coefficients[3 * i + 2])};
+        radiance[i] = {std::max(0.0f, coefficients[3 * i] * scale), std::max(0.0f, coefficients[3 * i + 1] * scale),
+                       std::max(0.0f, coefficients[3 * i + 2] * scale)};
     return radiance;
 }
 
 std::vector<Imath::V3f> ShadowFieldLookup::map(std::uint64_t index) const {
     const MapWeight one{index, 1.0};
-    return blend({&one, 1});
+    return blend({&one, 1}, mapLayout_.faceSize());
 }
 
 Imath::V3d ShadowFieldLookup::integrate(const std::vector<Imath::V3f>& radiance, const Imath::V3d* normal) const {
@@ -120,22 +127,30 @@ Imath::V3d ShadowFieldLookup::farIntensity(const Imath::V3d& direction) const {
     FieldStencil s;
     addDirectionWeights(field_.shells() - 1, direction, 1.0, s);
     const double outer = field_.radii.back();
-    return integrate(blend({s.maps.data(), s.count}), nullptr) * (outer * outer);
+    return integrate(blend({s.maps.data(), s.count}, mapLayout_.faceSize()), nullptr) * (outer * outer);
 }
 
 std::vector<Imath::V3f> ShadowFieldLookup::incidentRadiance(const Imath::V3d& point) const {
+    return incidentRadiance(point, mapLayout_.faceSize());
+}
+
+std::vector<Imath::V3f> ShadowFieldLookup::incidentRadiance(const Imath::V3d& point, std::uint32_t faceSize) const {
+    if (faceSize == 0 || (faceSize & (faceSize - 1)) != 0 || faceSize > mapLayout_.faceSize())
+        throw Error("shadow field lookup: face size " + std::to_string(faceSize) +
+                    " is not a power of two up to the maps' " + std::to_string(mapLayout_.faceSize()));
     const FieldStencil s = stencil(point);
-    if (s.region != FieldRegion::Beyond) return blend({s.maps.data(), s.count});
+    if (s.region != FieldRegion::Beyond) return blend({s.maps.data(), s.count}, faceSize);
     const Imath::V3d irradiance = farIntensity(s.direction) / (s.radius * s.radius);
-    std::vector<Imath::V3f> radiance(mapLayout_.texels(), Imath::V3f(0.0f));
-    const std::uint32_t texel = mapLayout_.lookup(Imath::V3f(-s.direction));
-    radiance[texel] = Imath::V3f(irradiance / texelSolidAngles_[texel]);
+    const CubeMapLayout layout(faceSize);
+    std::vector<Imath::V3f> radiance(layout.texels(), Imath::V3f(0.0f));
+    const std::uint32_t texel = layout.lookup(Imath::V3f(-s.direction));
+    radiance[texel] = Imath::V3f(irradiance / layout.solidAngle(texel));
     return radiance;
 }
 
 Imath::V3d ShadowFieldLookup::irradiance(const Imath::V3d& point, const Imath::V3d& normal) const {
     const FieldStencil s = stencil(point);
-    if (s.region != FieldRegion::Beyond) return integrate(blend({s.maps.data(), s.count}), &normal);
+    if (s.region != FieldRegion::Beyond) return integrate(blend({s.maps.data(), s.count}, mapLayout_.faceSize()), &normal);
     const double cosine = std::max(0.0, -normal.dot(s.direction));
     if (cosine == 0.0) return Imath::V3d(0.0);
     return farIntensity(s.direction) * (cosine / (s.radius * s.radius));

@@ -64,6 +64,11 @@ public:
     // Beyond the outer sphere, the point light: all of E = I(w) / r^2 in the one texel
     // holding -w, as radiance E / Omega_texel.
     std::vector<Imath::V3f> incidentRadiance(const Imath::V3d& point) const;
+    // The same averaged to a cube map of face size `faceSize` (a power of two up to the
+    // maps'): each texel the mean over the map texels it covers, from the coarse levels'
+    // coefficients alone (cheaper by about (mapFaceSize / faceSize)^2). Throws opal::Error
+    // for another face size.
+    std::vector<Imath::V3f> incidentRadiance(const Imath::V3d& point, std::uint32_t faceSize) const;
     // RGB irradiance on a surface at `point` with unit normal `normal`: the sum over
     // texels of L times the integral of max(0, n.w) over the texel (cube_map_cosine.h),
     // or the point light beyond the field.
@@ -74,7 +79,7 @@ public:
     std::vector<Imath::V3f> map(std::uint64_t index) const;
 
 private:
-    std::vector<Imath::V3f> blend(std::span<const MapWeight> maps) const;
+    std::vector<Imath::V3f> blend(std::span<const MapWeight> maps, std::uint32_t faceSize) const;
     std::uint32_t directionSample(std::uint32_t face, std::int32_t u, std::int32_t v) const;
     void addDirectionWeights(std::uint32_t shell, const Imath::V3d& direction, double weight,
                              FieldStencil& stencil) const;
