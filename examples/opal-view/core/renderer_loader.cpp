@@ -5,9 +5,7 @@
 namespace opal::view {
 
 LoadedRenderer loadRenderer(const std::optional<std::string>& typeName, std::ostream& warnings) {
-    std::vector<std::filesystem::path> paths = searchPathsFromEnvironment();
-    for (const std::filesystem::path& path : defaultSearchPaths(executablePath())) paths.push_back(path);
-    const PluginRegistry registry(paths);
+    const PluginRegistry registry(hostSearchPaths(executablePath()));
     for (const std::string& problem : registry.problems()) warnings << "opal-view: warning: " << problem << '\n';
     RendererPluginHandle plugin = typeName ? registry.createRendererPlugin(*typeName) : registry.defaultRendererPlugin();
     RenderDelegateHandle delegate = plugin.createRenderDelegate();
