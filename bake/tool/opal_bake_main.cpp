@@ -1,11 +1,13 @@
 // opal-bake INPUT -o OUT_STEM [options]: bakes a mesh into an Opal asset (OUT_STEM.usda +
 // OUT_STEM.<bake id>.opal, bake/asset_stem.h). opal-bake light SPEC -o OUT_STEM [options]:
-// bakes a local light's shadow field (bake/tool/light_command.h). Exit codes: 0 done, 1 error (including
+// bakes a local light's shadow field (bake/tool/light_command.h). opal-bake batch
+// MANIFEST.json: bakes many assets (bake/tool/batch_command.h). Exit codes: 0 done, 1 error (including
 // another bake writing the same stem), 2 bad arguments, 130/143 interrupted by
 // SIGINT/SIGTERM (nothing written; a previous asset stays intact).
 #include "bake/bake_pipeline.h"
 #include "bake/bake_report.h"
 #include "bake/procedural_mesh.h"
+#include "bake/tool/batch_command.h"
 #include "bake/tool/light_command.h"
 
 #include <CLI/CLI.hpp>
@@ -46,11 +48,12 @@ int main(int argc, char** argv) {
     opal::BakeOptions options;
     std::string outStem, jsonPath, range;
     bool quiet = false;
-    // Required unless the `light` subcommand is given (checked after parsing).
+    // Required unless a subcommand (`light`, `batch`) is given (checked after parsing).
     app.add_option("input", options.input,
                    "mesh file (.obj .ply .gltf .glb .stl .usda) or a built-in mesh: " + opal::builtinMeshNames());
     app.add_option("-o,--output", outStem, "output stem: writes STEM.usda and its sidecar STEM.<bake id>.opal");
     opal::LightCommand light(app);  // not const: parsing writes its options
+    opal::BatchCommand batch(app);
     app.require_subcommand(0, 1);
     app.add_option("--scheme", options.scheme,
                    "subdivision scheme; auto: a .usda's subdivisionScheme, else loop for all-triangle meshes, "
@@ -93,8 +96,9 @@ int main(int argc, char** argv) {
     app.add_flag("-q,--quiet", quiet, "no progress output");
     try {
         app.parse(argc, argv);
-        if (!light.chosen() && options.input.empty()) throw CLI::RequiredError("input");
-        if (!light.chosen() && outStem.empty()) throw CLI::RequiredError("--output");
+        const bool subcommand = light.chosen() || batch.chosen();
+        if (!subcommand && options.input.empty()) throw CLI::RequiredError("input");
+        if (!subcommand && outStem.empty()) throw CLI::RequiredError("--output");
         if (!range.empty() && range != "presets") options.range = parseRange(range);
         if (level != "auto") options.level = std::uint32_t(std::stoul(level));
     } catch (const CLI::ParseError& e) {
@@ -111,6 +115,7 @@ int main(int argc, char** argv) {
     const opal::CancelToken cancel(&gInterrupted);
     try {
         if (light.chosen()) return light.run(&progress, cancel);
+        if (batch.chosen()) return batch.run(cancel);
         // Taken before the work, so that a second bake of the stem fails at once.
         const opal::StemLock lock{opal::AssetStem(outStem)};
         opal::BakeReport report;

@@ -1,0 +1,37 @@
+// `opal-bake batch MANIFEST.json [--json REPORT] [--quiet]` (batch_manifest.h): bakes many
+// assets one after another, each in its own opal-bake process (its log in STEM.batch.log),
+// so that one asset's crash or memory cannot take the others down.
+//   - Skipped when unchanged: the asset's layer and the sidecar it names exist and
+//     STEM.batch holds the key of this bake, XXH64 of opal-bake's own bytes, the input's
+//     bytes (or the built-in name) and the arguments.
+//   - A failed asset is retried once; then it is reported with the last line of its log.
+//   - One summary: a table on stdout, failures first, and the same as JSON (--json).
+// Exit codes: 0 every asset baked or skipped, 1 some asset failed (or the manifest is bad),
+// 2 bad arguments, 130/143 interrupted (the asset being baked is left as it was).
+#pragma once
+
+#include "bake/progress.h"
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+
+namespace opal {
+
+class BatchCommand {
+public:
+    // Adds the `batch` subcommand to `app` (which keeps pointers to this object's members).
+    explicit BatchCommand(CLI::App& app);
+    BatchCommand(const BatchCommand&) = delete;
+    BatchCommand& operator=(const BatchCommand&) = delete;
+
+    bool chosen() const { return command_->parsed(); }
+    int run(const CancelToken& cancel) const;
+
+private:
+    CLI::App* command_;
+    std::string manifest_, json_;
+    bool quiet_ = false;
+};
+
+}  // namespace opal
