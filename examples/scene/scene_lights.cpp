@@ -1,6 +1,6 @@
 #include "examples/scene/scene_lights.h"
 
-#include "examples/scene/asset_path.h"
+#include "examples/scene/layer_reference.h"
 #include "schema/usd/usda_reader.h"
 
 #include <algorithm>
@@ -105,16 +105,10 @@ hd::LightDesc readLight(PrimReader& reader, const Imath::M44d& objectToWorld, co
 }
 
 hd::LightDesc referencedLight(PrimReader& reader, const std::filesystem::path& layerFile) {
-    const std::vector<usda::Reference> references = reader.prim().references.composed();
-    if (references.size() != 1 || references.front().assetPath.empty())
-        reader.fail(reader.prim().location, "has " + std::to_string(references.size()) +
-                                                " references; a light references exactly one baked light layer");
-    const usda::Reference& reference = references.front();
-    const std::filesystem::path file = resolveAssetPath(layerFile, reference.assetPath);
-    std::error_code error;
-    if (!std::filesystem::is_regular_file(file, error))
-        reader.fail(reader.prim().location, "references @" + reference.assetPath +
-                                                "@, which does not exist (resolved to " + file.string() + ")");
+    const LayerReference referenced =
+        referencedLayer(reader, layerFile, "a light references exactly one baked light layer");
+    const usda::Reference& reference = *referenced.reference;
+    const std::filesystem::path& file = referenced.file;
     const usda::Layer layer = usda::readUsdaFile(file);
     const std::string name = reference.primPath.empty() ? layer.defaultPrim() : reference.primPath.substr(1);
     const auto prim = std::find_if(layer.rootPrims.begin(), layer.rootPrims.end(),

@@ -84,7 +84,7 @@ double relativeRmse(const Samples& s, const Imath::V3d& at) {
     asset.addMesh(s.mesh, Imath::M44d());
     asset.commit();
     const EmitterScene emitter(flame().emitter);
-    const ShadowFieldLight light(flame().field, test::fieldLightDesc(test::translation4(at.x, at.y, at.z)));
+    const ShadowFieldLight light(flame().field, test::fieldLightDesc(test::translation(at.x, at.y, at.z)));
     const std::vector<LightArrival> arrivals = light.arrivals(s.placed, &asset, 1e-3f);
     double error = 0.0, norm = 0.0;
     int lit = 0;

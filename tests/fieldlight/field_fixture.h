@@ -14,6 +14,7 @@
 #include "bake/light/field_bake.h"
 #include "delegate/relight/shadow_field_light.h"
 #include "schema/asset/shadow_field_file.h"
+#include "tests/render/render_scene.h"
 #include "tests/support/open_temp_dir.h"
 
 #include <memory>
@@ -48,12 +49,6 @@ inline const SphereField& sphereField() {
 // pi L (a / d)^2 cos(theta) for one channel's radiance L.
 inline double sphereIrradiance(double radiance, double radius, double distance, double cosTheta) {
     return std::numbers::pi * radiance * (radius / distance) * (radius / distance) * cosTheta;
-}
-
-inline Imath::M44d translation4(double x, double y, double z) {
-    Imath::M44d m;
-    m.setTranslation(Imath::V3d(x, y, z));
-    return m;
 }
 
 inline hd::LightDesc fieldLightDesc(const Imath::M44d& transform, double intensity = 1.0) {

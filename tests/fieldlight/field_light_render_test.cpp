@@ -44,7 +44,7 @@ const float* centre(const test::Aovs& a, const hd::Token& aov) { return a.at(aov
 
 TEST(FieldLightRender, CameraSeesTheEmitterInFrontOfTheAsset) {
     // The emitter 7 mm in front of the sphere (radius 5 at the origin), camera at z = 30.
-    FieldScene s(test::fieldLightDesc(test::translation4(0.0, 0.0, 12.0)));
+    FieldScene s(test::fieldLightDesc(test::translation(0.0, 0.0, 12.0)));
     const test::Aovs a = s.render();
     // A uniform sphere emitter shows its radiance along every ray that meets it.
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(centre(a, "emission")[c] / kEmitterRadiance[c], 1.0, 0.05) << c;
@@ -59,7 +59,7 @@ TEST(FieldLightRender, CameraSeesTheEmitterInFrontOfTheAsset) {
 }
 
 TEST(FieldLightRender, ColorIsSubsurfacePlusSpecularPlusEmissionEverywhere) {
-    FieldScene s(test::fieldLightDesc(test::translation4(2.0, 1.0, 10.0)));
+    FieldScene s(test::fieldLightDesc(test::translation(2.0, 1.0, 10.0)));
     const test::Aovs a = s.render();
     int emitting = 0;
     for (int y = 0; y < kHeight; ++y)
@@ -78,7 +78,7 @@ TEST(FieldLightRender, ColorIsSubsurfacePlusSpecularPlusEmissionEverywhere) {
 }
 
 TEST(FieldLightRender, EmitterBehindTheAssetIsHidden) {
-    FieldScene s(test::fieldLightDesc(test::translation4(0.0, 0.0, -9.0)));
+    FieldScene s(test::fieldLightDesc(test::translation(0.0, 0.0, -9.0)));
     const test::Aovs a = s.render();
     EXPECT_EQ(centre(a, "primId")[0], 0.0f);
     EXPECT_EQ(centre(a, "emission")[0], 0.0f);
@@ -86,11 +86,11 @@ TEST(FieldLightRender, EmitterBehindTheAssetIsHidden) {
 }
 
 TEST(FieldLightRender, MovingTheLightAndBackGivesTheSameBytes) {
-    const Imath::M44d home = test::translation4(3.0, 2.0, 11.0);
+    const Imath::M44d home = test::translation(3.0, 2.0, 11.0);
     FieldScene s(test::fieldLightDesc(home));
     test::addLight(s.scene, s.index, "/World/Key", test::pointLight({-20.0, 10.0, 20.0}, 300.0));
     const test::Aovs before = s.render();
-    s.moveFlame(test::translation4(-4.0, 0.0, 9.0));
+    s.moveFlame(test::translation(-4.0, 0.0, 9.0));
     const test::Aovs moved = s.render();
     EXPECT_NE(moved.data.at("subsurface"), before.data.at("subsurface"));
     s.moveFlame(home);
@@ -99,7 +99,7 @@ TEST(FieldLightRender, MovingTheLightAndBackGivesTheSameBytes) {
 }
 
 TEST(FieldLightRender, FlickerScalesTheEmitterAtTheSceneTime) {
-    hd::LightDesc flame = test::fieldLightDesc(test::translation4(0.0, 0.0, 12.0));
+    hd::LightDesc flame = test::fieldLightDesc(test::translation(0.0, 0.0, 12.0));
     flame.flicker = {0.4, 6.0, 3};
     double emitted[2] = {}, expected[2] = {};
     const double times[2] = {0.10, 0.37};

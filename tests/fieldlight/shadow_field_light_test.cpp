@@ -95,7 +95,7 @@ TEST(ShadowFieldLight, FacingAwayReceivesNothing) {
 
 // A sample 4 emitter radii below the emitter, facing up; a large square blocker at a height.
 Imath::V3d shadowedBy(const RayScene* scene) {
-    const ShadowFieldLight light(sphereField().loaded, test::fieldLightDesc(test::translation4(0.0, 8.0, 0.0)));
+    const ShadowFieldLight light(sphereField().loaded, test::fieldLightDesc(test::translation(0.0, 8.0, 0.0)));
     return irradianceOf(light.arrivals(oneSample({0.0, 0.0, 0.0}, {0.0, 1.0, 0.0}), scene, 1e-4f)[0]);
 }
 
@@ -146,7 +146,7 @@ TEST(ShadowFieldLight, EmitterInsideAConcavityLightsTheInnerWall) {
     cup.addMesh(tube(radius, height, segments), Imath::M44d());
     cup.commit();
     const ShadowFieldLight light(sphereField().loaded,
-                                 test::fieldLightDesc(test::translation4(0.0, flameHeight, 0.0)));
+                                 test::fieldLightDesc(test::translation(0.0, flameHeight, 0.0)));
     // The middle of a wall face at the flame's height, facing the axis.
     const double phi = std::numbers::pi / segments, inner = radius * std::cos(std::numbers::pi / segments);
     const Imath::V3d p(inner * std::cos(phi), flameHeight, inner * std::sin(phi));
