@@ -60,17 +60,18 @@ RenderDelegateHandle createDelegate(const RendererPluginHandle& plugin, const sc
 }
 
 // The scene in a render index on one delegate, rendered at any scene time: between frames
-// only what the time changes (flickering lights) is synced again.
+// only what the time changes (flickering and animated lights, animated cameras and
+// xforms) is synced again.
 class SceneRender {
 public:
-    SceneRender(hd::RenderDelegate& delegate, scene::Scene scene)
-        : delegate_(delegate), source_(std::move(scene)), index_(delegate) {
+    SceneRender(hd::RenderDelegate& delegate, scene::Scene scene, scene::AssetCache& assets)
+        : delegate_(delegate), assets_(assets), source_(std::move(scene)), index_(delegate) {
         source_.populate(index_);
     }
 
     void render(double seconds, const scene::RenderSetup& setup, const AovBuffers& buffers, StageTimer& timer,
                 std::ostream& warnings) {
-        source_.setTime(seconds, index_);
+        source_.setTime(seconds, index_, assets_);  // its errors name the scene file already
         try {
             index_.sync();
         } catch (const Error& e) {
@@ -90,6 +91,7 @@ public:
 
 private:
     hd::RenderDelegate& delegate_;
+    scene::AssetCache& assets_;
     scene::UsdaSceneSource source_;
     hd::RenderIndex index_;
     std::unique_ptr<hd::RenderPass> pass_;
@@ -156,7 +158,7 @@ std::string renderScene(const RenderOptions& options, std::ostream& warnings) {
     timer.lap("delegate");
 
     const AovBuffers buffers(options.aovs, display.has_value());
-    SceneRender render(*delegate, std::move(scene));
+    SceneRender render(*delegate, std::move(scene), assets);
     for (const auto& [seconds, files] : frames) {
         render.render(seconds, setup, buffers, timer, warnings);
         std::vector<std::string> writeWarnings;

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,10 @@ struct Scene {
     std::string upAxis = "Y";               // layer metadata upAxis: "Y" or "Z"
     std::optional<double> metersPerUnit;    // layer metadata, when authored
     double timeCodesPerSecond = 24.0;       // layer metadata (USD's fallback 24)
+    double timeCode = 0.0;                  // the time the descriptions were read at
+    // The prims whose descriptions change with time (they, or an ancestor's xformOps,
+    // have more than one time sample): lights, cameras and meshes.
+    std::set<hd::SdfPath> timeVarying;
     std::map<hd::SdfPath, SceneMesh> meshes;
     std::map<hd::SdfPath, SceneMaterial> materials;
     std::map<hd::SdfPath, SceneLight> lights;

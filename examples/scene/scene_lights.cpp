@@ -1,6 +1,7 @@
 #include "examples/scene/scene_lights.h"
 
 #include "examples/scene/layer_reference.h"
+#include "schema/usd/time_samples.h"
 #include "schema/usd/usda_reader.h"
 
 #include <algorithm>
@@ -104,7 +105,7 @@ hd::LightDesc readLight(PrimReader& reader, const Imath::M44d& objectToWorld, co
     return desc;
 }
 
-hd::LightDesc referencedLight(PrimReader& reader, const std::filesystem::path& layerFile) {
+ReferencedLight referencedLight(PrimReader& reader, const std::filesystem::path& layerFile, double timeCode) {
     const LayerReference referenced =
         referencedLayer(reader, layerFile, "a light references exactly one baked light layer");
     const usda::Reference& reference = *referenced.reference;
@@ -116,11 +117,12 @@ hd::LightDesc referencedLight(PrimReader& reader, const std::filesystem::path& l
     if (prim == layer.rootPrims.end() || prim->typeName != reader.prim().typeName)
         reader.fail(reader.prim().location, "references @" + reference.assetPath + "@, which has no " +
                                                 reader.prim().typeName + " prim </" + name + ">");
-    PrimReader light(*prim, "/" + name);
+    const usda::Prim atTime = usda::propertiesAt(*prim, timeCode);
+    PrimReader light(atTime, "/" + name);
     hd::LightDesc desc = readLight(light, Imath::M44d(), file);
     light.ignore("opal:bakeId");  // the layer's record of its bake (the sidecar checks it)
     light.finish();
-    return desc;
+    return {std::move(desc), usda::mightBeTimeVarying(*prim)};
 }
 
 }  // namespace opal::scene

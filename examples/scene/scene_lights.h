@@ -41,7 +41,12 @@ hd::LightDesc readLight(PrimReader& reader, const Imath::M44d& objectToWorld, co
 // (references = @./flame.usda@)`, what `opal-bake light` writes): that layer's light prim
 // (the reference's prim path, else its defaultPrim) read as a light, its files resolved
 // against its own layer. Throws UsdaError at the reference (no such file, more than one
-// reference, a prim of another type) or inside the light layer (its own errors).
-hd::LightDesc referencedLight(PrimReader& reader, const std::filesystem::path& layerFile);
+// reference, a prim of another type) or inside the light layer (its own errors). The
+// light layer's time samples are read at `timeCode`.
+struct ReferencedLight {
+    hd::LightDesc desc;
+    bool timeVarying = false;  // the referenced prim has animated attributes
+};
+ReferencedLight referencedLight(PrimReader& reader, const std::filesystem::path& layerFile, double timeCode);
 
 }  // namespace opal::scene

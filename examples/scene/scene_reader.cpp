@@ -7,6 +7,7 @@
 #include "examples/scene/scene_path.h"
 #include "examples/scene/xformable.h"
 #include "schema/asset/shadow_field_layer.h"
+#include "schema/usd/time_samples.h"
 #include "schema/usd/usda_reader.h"
 
 #include <cmath>
@@ -67,12 +68,24 @@ struct Inherited {
     hd::SdfPath path = "/";
     Imath::M44d toWorld;  // the parent's object-to-world matrix
     bool visible = true;
+    bool timeVarying = false;  // the prim's own xformOps or an ancestor's are animated
     std::optional<Binding> binding;
 };
 
+// Materials and render settings are read once, at load: an animated one would silently
+// show one frame (and opal-render's --material override would be lost on a re-read).
+void rejectAnimation(const usda::Prim& prim, const PrimReader& reader) {
+    for (const usda::Property& p : prim.properties)
+        if (const auto* a = std::get_if<usda::Attribute>(&p); a && usda::mightBeTimeVarying(*a))
+            reader.failAt(*a, "has timeSamples, which Opal reads on lights, cameras and xformOps only");
+}
+
 class SceneReader {
 public:
-    SceneReader(const std::filesystem::path& file, AssetCache& assets) : assets_(assets) { scene_.file = file; }
+    SceneReader(const std::filesystem::path& file, AssetCache& assets, double timeCode) : assets_(assets) {
+        scene_.file = file;
+        scene_.timeCode = timeCode;
+    }
 
     Scene read() {
         const usda::Layer layer = usda::readUsdaFile(scene_.file);
@@ -134,13 +147,20 @@ void SceneReader::readPrim(const usda::Prim& prim, const Inherited& parent) {
         throw usda::UsdaError(prim.location, "over <" + path + ">: a scene layer has nothing to override; use def");
     if (const usda::Value* active = prim.metadata.find("active"); active && !active->get<usda::types::Bool>("active"))
         return;
-    PrimReader reader(prim, path);
+    std::optional<usda::Prim> atTime;  // the prim's properties at the scene time, when any is sampled
+    if (usda::hasTimeSamples(prim)) atTime = usda::propertiesAt(prim, scene_.timeCode);
+    PrimReader reader(atTime ? *atTime : prim, path);
+    // A prim that comes and goes would change the render index, not just descriptions.
+    if (const usda::Attribute* v = prim.findAttribute("visibility"); v && usda::mightBeTimeVarying(*v))
+        reader.failAt(*v, "has timeSamples; animated visibility is not supported");
     if (!isSupportedType(prim.typeName))
         reader.fail(prim.location, "unsupported prim type " + quotedName(prim.typeName) + " (Opal's scene subset: " +
                                        SupportedTypes + "; see examples/SCENES.md)");
     Inherited self = parent;
     if (const std::optional<PrimRole> role = roleOf(prim)) self = readCommon(reader, parent, *role);
+    else rejectAnimation(prim, reader);
     self.path = path;
+    self.timeVarying = parent.timeVarying || usda::mightBeTimeVarying(prim);
     readTyped(reader, self);
     reader.finish();
     for (const usda::Prim& child : prim.children) readPrim(child, self);
@@ -193,7 +213,12 @@ void SceneReader::readTyped(PrimReader& reader, const Inherited& self) {
     const std::string& type = reader.prim().typeName;
     const bool reference = isAssetReference(reader.prim());
     if (reference && (type.empty() || type == "Mesh")) return addMesh(reader, self);
-    if (reference && type == kShadowFieldLightType) return addLight(reader, self, referencedLight(reader, scene_.file));
+    if (reference && type == kShadowFieldLightType) {
+        ReferencedLight referenced = referencedLight(reader, scene_.file, scene_.timeCode);
+        Inherited light = self;
+        light.timeVarying = self.timeVarying || referenced.timeVarying;
+        return addLight(reader, light, std::move(referenced.desc));
+    }
     if (reference)
         reader.fail(reader.prim().location, "references an asset, but its stronger type '" + type +
                                                 "' would replace the asset's Mesh (as in USD): use def \"Name\" or "
@@ -209,12 +234,14 @@ void SceneReader::readTyped(PrimReader& reader, const Inherited& self) {
         addLight(reader, self, {});
     } else if (type == "Camera") {
         scene_.cameras[self.path] = {readCamera(reader, self.toWorld), reader.prim().location};
+        if (self.timeVarying) scene_.timeVarying.insert(self.path);
     } else {
         addRenderSettings(reader);
     }
 }
 
 void SceneReader::addMesh(PrimReader& reader, const Inherited& self) {
+    if (self.timeVarying) scene_.timeVarying.insert(self.path);
     SceneMesh mesh = readMesh(reader, self.toWorld, scene_.file, assets_);
     mesh.desc.visible = self.visible;
     if (self.binding) {
@@ -227,7 +254,9 @@ void SceneReader::addMesh(PrimReader& reader, const Inherited& self) {
 void SceneReader::addLight(PrimReader& reader, const Inherited& self, hd::LightDesc base) {
     const LightType light = lightTypeOf(reader.prim().typeName).value();
     hd::LightDesc desc = readLight(reader, self.toWorld, scene_.file, std::move(base));
-    if (self.visible) scene_.lights[self.path] = {light.primType, std::move(desc), reader.prim().location};
+    if (!self.visible) return;
+    scene_.lights[self.path] = {light.primType, std::move(desc), reader.prim().location};
+    if (self.timeVarying) scene_.timeVarying.insert(self.path);
 }
 
 void SceneReader::addRenderSettings(PrimReader& reader) {
@@ -268,6 +297,8 @@ void SceneReader::checkRenderCamera() const {
 
 }  // namespace
 
-Scene readScene(const std::filesystem::path& file, AssetCache& assets) { return SceneReader(file, assets).read(); }
+Scene readScene(const std::filesystem::path& file, AssetCache& assets, double timeCode) {
+    return SceneReader(file, assets, timeCode).read();
+}
 
 }  // namespace opal::scene

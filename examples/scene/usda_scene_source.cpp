@@ -1,5 +1,7 @@
 #include "examples/scene/usda_scene_source.h"
 
+#include "examples/scene/scene_reader.h"
+
 #include "schema/error.h"
 #include "schema/usd/usda_error.h"
 
@@ -58,13 +60,34 @@ hd::LightDesc UsdaSceneSource::light(const hd::SdfPath& id) const {
     return desc;
 }
 
-void UsdaSceneSource::setTime(double seconds, hd::RenderIndex& index) {
+void UsdaSceneSource::setTime(double seconds, hd::RenderIndex& index, AssetCache& assets) {
     if (!std::isfinite(seconds)) throw Error(scene_.file.string() + ": the scene time is not finite");
     if (seconds == time_) return;
+    if (!scene_.timeVarying.empty())
+        takeTimeVarying(readScene(scene_.file, assets, seconds * scene_.timeCodesPerSecond), index);
     time_ = seconds;
     for (const auto& [id, light] : scene_.lights)
         if (light.desc.kind == hd::LightKind::ShadowField && light.desc.flicker.amplitude > 0.0)
             index.changeTracker().markDirty(id, hd::Dirty::Params);
+}
+
+// Only the time-varying prims are taken from the scene read at the new time: a host's
+// edits to the others (a viewer's, opal-render's --material) stay.
+void UsdaSceneSource::takeTimeVarying(Scene atTime, hd::RenderIndex& index) {
+    hd::ChangeTracker& tracker = index.changeTracker();
+    for (const hd::SdfPath& id : scene_.timeVarying) {
+        if (auto light = atTime.lights.find(id); light != atTime.lights.end()) {
+            scene_.lights.at(id).desc = std::move(light->second.desc);
+            tracker.markDirty(id, hd::Dirty::Params | hd::Dirty::Transform);
+        } else if (auto camera = atTime.cameras.find(id); camera != atTime.cameras.end()) {
+            scene_.cameras.at(id).desc = std::move(camera->second.desc);
+            tracker.markDirty(id, hd::Dirty::Params | hd::Dirty::Transform);
+        } else if (auto mesh = atTime.meshes.find(id); mesh != atTime.meshes.end()) {
+            scene_.meshes.at(id).desc.transform = mesh->second.desc.transform;
+            tracker.markDirty(id, hd::Dirty::Transform);
+        }
+    }
+    scene_.timeCode = atTime.timeCode;
 }
 
 hd::CameraDesc UsdaSceneSource::camera(const hd::SdfPath& id) const {

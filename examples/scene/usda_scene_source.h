@@ -6,6 +6,7 @@
 
 #include "delegate/hd/render_index.h"
 #include "delegate/hd/scene_delegate.h"
+#include "examples/scene/asset_cache.h"
 #include "examples/scene/scene.h"
 
 namespace opal::scene {
@@ -19,10 +20,13 @@ public:
     // the thread that syncs, and marks what changed dirty. Prims keep their paths.
     void setScene(Scene scene) { scene_ = std::move(scene); }
 
-    // The scene time in seconds (0 at first) at which time-varying lights (a shadow-field
-    // light's flicker) are described. Setting it marks those lights dirty in `index`.
+    // The scene time in seconds (0 at first) at which time-varying prims are described:
+    // a shadow-field light's flicker, and the prims scene.timeVarying names (animated
+    // lights, cameras and xformOps), whose descriptions are read again from the scene
+    // file at time code seconds * timeCodesPerSecond (their assets through `assets`).
+    // Marks what changed dirty in `index`. Throws what readScene throws at that time.
     double time() const { return time_; }
-    void setTime(double seconds, hd::RenderIndex& index);
+    void setTime(double seconds, hd::RenderIndex& index, AssetCache& assets);
 
     // Inserts every material and camera and light (Sprims), then every mesh (Rprims).
     // A prim the index refuses (a type the delegate does not support, e.g. a shadow-field
@@ -36,6 +40,8 @@ public:
     hd::CameraDesc camera(const hd::SdfPath& id) const override;
 
 private:
+    void takeTimeVarying(Scene atTime, hd::RenderIndex& index);
+
     Scene scene_;
     double time_ = 0.0;
 };

@@ -49,6 +49,15 @@ const Prim* findByName(const std::vector<Prim>& prims, std::string_view name) {
     return it != prims.end() ? &*it : nullptr;
 }
 
+// A value read without a time cannot stand for an animated attribute: refuse rather than
+// silently take the default (scenes evaluate attributes at their time, time_samples.h).
+void requireUntimed(const Attribute& a, std::string_view what) {
+    if (!a.timeSamples.empty())
+        throw UsdaError(a.timeSamples.front().value.location(),
+                        std::string(what) + " has timeSamples; Opal reads time-sampled attributes only in scenes, "
+                                            "at the scene time");
+}
+
 }  // namespace
 
 std::string_view specifierKeyword(Specifier s) {
@@ -62,6 +71,7 @@ std::string_view specifierKeyword(Specifier s) {
 
 void Attribute::requireType(ValueType expected) const {
     std::string what = "attribute " + quoted(name);
+    requireUntimed(*this, what);
     if (!value) {
         throw UsdaError(location, what + " has no value, expected " + typeName(expected));
     }
@@ -129,6 +139,7 @@ const Attribute* Prim::findValue(std::string_view n, std::span<const ValueType> 
         throw UsdaError(a->location, prefix + "attribute " + quoted(n) + " has type " + usda::typeName(actual) +
                                          ", expected " + typeNames(accepted));
     }
+    requireUntimed(*a, prefix + "attribute " + quoted(n));
     return a->hasValue() ? a : nullptr;
 }
 

@@ -52,19 +52,31 @@ struct Reference {
     friend bool operator==(const Reference&, const Reference&) = default;
 };
 
+// One authored time sample of an attribute (`x.timeSamples = { 12: 2.5 }`): the time code
+// and the value there, which may be None (blocked from that time on).
+struct TimeSample {
+    double time = 0.0;
+    Value value;
+
+    friend bool operator==(const TimeSample&, const TimeSample&) = default;
+};
+
 struct Attribute {
     std::string name{};  // namespaced: "points", "opal:sigmaA", "xformOp:translate"
     ValueType type{};
     bool custom = false;
     bool uniform = false;
     std::optional<Value> value{};  // the default (`= ...`); may be None
+    // `.timeSamples`, sorted by time, times unique. An attribute with samples is read at a
+    // time code only (time_samples.h); the typed readers below refuse it.
+    std::vector<TimeSample> timeSamples{};
     std::string comment{};         // bare string at the top of the metadata block
     Dictionary metadata{};         // doc, interpolation, elementSize, customData, ...
     SourceLocation location{};     // of the declaration's first token
 
     bool hasValue() const { return value && !value->isNone(); }
-    // The value if it is authored, not None and of type T; otherwise throws
-    // "<where>: attribute 'points' has type float3[], expected point3f[]".
+    // The value if it is authored, not None, not time-sampled and of type T; otherwise
+    // throws "<where>: attribute 'points' has type float3[], expected point3f[]".
     template <ValueType T>
     const StorageOf<T>& get() const {
         requireType(T);

@@ -6,7 +6,9 @@
 #include "schema/usd/usda_syntax.h"
 #include "schema/usd/usda_value_parser.h"
 
+#include <algorithm>
 #include <fstream>
+#include <map>
 #include <unordered_map>
 
 namespace opal::usda {
@@ -71,13 +73,15 @@ private:
     // Prims and properties.
     Prim parsePrim(int depth);
     void parsePrimBody(Prim& prim, int depth);
+    void addProperty(Prim& prim, Property property, const Token& at, NameScope& declared, NameScope& sampled);
     void rejectBodyKeyword(const Token& t);
     Property parseProperty();
     Attribute parseAttribute(bool custom, bool uniform, const Token& first);
     Relationship parseRelationship(bool custom, const Token& first);
     std::vector<std::string> parseTargets();
     std::string parsePath(std::string_view what, bool primOnly);
-    Token parsePropertyName(std::string_view what);
+    Token parsePropertyName(std::string_view what, bool* timeSamples = nullptr);
+    std::vector<TimeSample> parseTimeSamples(ValueType type);
 
     // Helpers.
     Token expect(char punct, std::string_view expected);
@@ -349,7 +353,7 @@ Prim Parser::parsePrim(int depth) {
 }
 
 void Parser::parsePrimBody(Prim& prim, int depth) {
-    NameScope children("prim"), properties("property");
+    NameScope children("prim"), properties("property"), sampled("timeSamples of property");
     while (true) {
         Token t = lex_.peek();
         if (t.is('}')) {
@@ -363,10 +367,42 @@ void Parser::parsePrimBody(Prim& prim, int depth) {
             continue;
         }
         rejectBodyKeyword(t);
-        Property property = parseProperty();
-        properties.add(lex_, t, propertyName(property));
-        prim.properties.push_back(std::move(property));
+        addProperty(prim, parseProperty(), t, properties, sampled);
         separator('}', "a property");
+    }
+}
+
+// An attribute's declaration (with its default) and its `.timeSamples` are two statements
+// of one attribute, in either order; each may appear once.
+void Parser::addProperty(Prim& prim, Property property, const Token& at, NameScope& declared, NameScope& sampled) {
+    auto* added = std::get_if<Attribute>(&property);
+    const bool samples = added && !added->timeSamples.empty();
+    const std::string name = propertyName(property);
+    (samples ? sampled : declared).add(lex_, at, name);
+    const auto other = std::find_if(prim.properties.begin(), prim.properties.end(),
+                                    [&](const Property& p) { return propertyName(p) == name; });
+    if (other == prim.properties.end()) {
+        prim.properties.push_back(std::move(property));
+        return;
+    }
+    auto* existing = std::get_if<Attribute>(&*other);
+    if (!added || !existing) {
+        lex_.fail(at, "'" + name + "' is declared as a relationship and as an attribute (other at " +
+                          propertyLocation(*other).str() + ")");
+    }
+    Attribute& declaration = samples ? *existing : *added;
+    if (added->type != existing->type) {
+        lex_.fail(at, "the timeSamples of '" + name + "' have type " + typeName(samples ? added->type : existing->type) +
+                          " but its declaration has type " + typeName(declaration.type));
+    }
+    if (declaration.uniform) {
+        lex_.fail(at, "'" + name + "' is uniform, so it cannot have timeSamples");
+    }
+    if (samples) {
+        existing->timeSamples = std::move(added->timeSamples);
+    } else {
+        added->timeSamples = std::move(existing->timeSamples);
+        *existing = std::move(*added);
     }
 }
 
@@ -417,11 +453,23 @@ Attribute Parser::parseAttribute(bool custom, bool uniform, const Token& first) 
                                  std::string(kSubsetNote));
     }
     Attribute attr;
-    attr.name = std::string(parsePropertyName("an attribute name").text);
+    bool sampled = false;
+    attr.name = std::string(parsePropertyName("an attribute name", &sampled).text);
     attr.type = *type;
     attr.custom = custom;
     attr.uniform = uniform;
     attr.location = lex_.where(first);
+    if (sampled) {
+        if (uniform) {
+            lex_.fail(first, "'" + attr.name + "' is uniform, so it cannot have timeSamples");
+        }
+        expect('=', "'=' after " + attr.name + ".timeSamples");
+        attr.timeSamples = parseTimeSamples(*type);
+        if (lex_.peek().is('(')) {
+            lex_.fail(lex_.peek(), "metadata belongs on the attribute's declaration, not on its timeSamples");
+        }
+        return attr;
+    }
     if (lex_.peek().is('=')) {
         lex_.next();
         attr.value = values_.parse(*type, true);
@@ -452,8 +500,9 @@ Relationship Parser::parseRelationship(bool custom, const Token& first) {
     return rel;
 }
 
-// A property name, then rejects `.timeSamples`, `.connect`, `.spline`, `.default`.
-Token Parser::parsePropertyName(std::string_view what) {
+// A property name; `.timeSamples` sets *timeSamples where allowed (attributes), other
+// suffixes (`.connect`, `.spline`, `.default`) are rejected.
+Token Parser::parsePropertyName(std::string_view what, bool* timeSamples) {
     Token name = lex_.next();
     if (name.kind != TokenKind::Identifier || !isNamespacedName(name.text)) {
         lex_.unexpected(name, what);
@@ -461,12 +510,46 @@ Token Parser::parsePropertyName(std::string_view what) {
     if (lex_.peek().is('.')) {
         lex_.next();
         Token suffix = lex_.next();
+        if (timeSamples && suffix.isWord("timeSamples")) {
+            *timeSamples = true;
+            return name;
+        }
         if (suffix.kind == TokenKind::Identifier) {
             unsupported(suffix, suffix.text);
         }
         lex_.unexpected(suffix, "a property name suffix");
     }
     return name;
+}
+
+// `{ time: value, ... }`: time codes are numbers, each at most once; values of the
+// attribute's type or None. Kept sorted by time, as Sdf keeps them.
+std::vector<TimeSample> Parser::parseTimeSamples(ValueType type) {
+    const Token open = expect('{', "'{' to open the time samples");
+    std::vector<TimeSample> samples;
+    std::map<double, SourceLocation> seen;
+    while (!lex_.peek().is('}')) {
+        const Token at = lex_.peek();
+        if (at.kind != TokenKind::Number) {
+            lex_.unexpected(at, "a time code (a number) or '}'");
+        }
+        const double time = values_.parse(types::Double).get<types::Double>("time code");
+        if (const auto [it, inserted] = seen.emplace(time, lex_.where(at)); !inserted) {
+            lex_.fail(at, "duplicate time sample " + std::string(at.text) + " (first at " + it->second.str() + ")");
+        }
+        expect(':', "':' after the time code");
+        samples.push_back({time, values_.parse(type, true)});
+        if (!lex_.peek().is('}')) {
+            expect(',', "',' or '}' after a time sample");
+        }
+    }
+    lex_.next();
+    if (samples.empty()) {
+        lex_.fail(open, "timeSamples = {} holds no sample (remove it, or author a default value)");
+    }
+    std::stable_sort(samples.begin(), samples.end(),
+                     [](const TimeSample& a, const TimeSample& b) { return a.time < b.time; });
+    return samples;
 }
 
 std::vector<std::string> Parser::parseTargets() {

@@ -29,6 +29,8 @@ private:
     void primHeader(const Prim& prim, int indent, const std::string& path);
     void property(const Property& property, int indent, const std::string& primPath);
     void attribute(const Attribute& attr, int indent, const std::string& path);
+    void declaration(const Attribute& attr, int indent);
+    void timeSamples(const Attribute& attr, int indent, const std::string& path);
     void relationship(const Relationship& rel, int indent, const std::string& path);
     void metadataBlock(const std::string& comment, std::vector<MetadataLine> lines, int indent);
     void metadataLines(std::vector<MetadataLine>& lines, const Dictionary& metadata, MetadataOwner owner,
@@ -184,26 +186,59 @@ void Writer::property(const Property& p, int indent, const std::string& primPath
     }
 }
 
+// The declaration (default and metadata) and, when the attribute is animated, a second
+// statement with its timeSamples, as Sdf writes them.
 void Writer::attribute(const Attribute& attr, int indent, const std::string& path) {
-    if (!isAttributeType(attr.type) || (attr.value && attr.value->type() != attr.type)) {
+    const auto mismatched = [&](const Value& v) { return v.type() != attr.type; };
+    if (!isAttributeType(attr.type) || (attr.value && mismatched(*attr.value))) {
         fail(path, "attribute type " + typeName(attr.type) + " does not match its value" +
                        (attr.value ? " of type " + typeName(attr.value->type()) : ""));
     }
+    std::vector<MetadataLine> lines;
+    metadataLines(lines, attr.metadata, MetadataOwner::Attribute, indent + 1, path);
+    const bool declared = attr.value || !attr.comment.empty() || !lines.empty() || attr.timeSamples.empty();
+    if (declared) {
+        declaration(attr, indent);
+        if (attr.value) {
+            out_ += " = ";
+            appendValue(out_, *attr.value, indent, BoolStyle::Digits, "attribute " + path);
+        }
+        if (!attr.comment.empty() || !lines.empty()) {
+            out_ += " (";
+            metadataBlock(attr.comment, std::move(lines), indent);
+        }
+        out_ += '\n';
+    }
+    if (!attr.timeSamples.empty()) timeSamples(attr, indent, path);
+}
+
+void Writer::declaration(const Attribute& attr, int indent) {
     appendIndent(out_, indent);
     out_ += attr.custom ? "custom " : "";
     out_ += attr.uniform ? "uniform " : "";
     out_ += typeName(attr.type) + " " + attr.name;
-    if (attr.value) {
-        out_ += " = ";
-        appendValue(out_, *attr.value, indent, BoolStyle::Digits, "attribute " + path);
+}
+
+void Writer::timeSamples(const Attribute& attr, int indent, const std::string& path) {
+    if (attr.uniform) fail(path, "a uniform attribute cannot have timeSamples");
+    declaration(attr, indent);
+    out_ += ".timeSamples = {\n";
+    for (std::size_t i = 0; i < attr.timeSamples.size(); ++i) {
+        const TimeSample& sample = attr.timeSamples[i];
+        if (sample.value.type() != attr.type)
+            fail(path, "time sample at " + std::to_string(sample.time) + " has type " + typeName(sample.value.type()) +
+                           ", the attribute " + typeName(attr.type));
+        if (i > 0 && !(attr.timeSamples[i - 1].time < sample.time))
+            fail(path, "time samples are not in increasing order of time");
+        appendIndent(out_, indent + 1);
+        appendValue(out_, Value::make<types::Double>(sample.time), indent + 1, BoolStyle::Digits,
+                    "time code of " + path);
+        out_ += ": ";
+        appendValue(out_, sample.value, indent + 1, BoolStyle::Digits, "attribute " + path);
+        out_ += ",\n";
     }
-    std::vector<MetadataLine> lines;
-    metadataLines(lines, attr.metadata, MetadataOwner::Attribute, indent + 1, path);
-    if (!attr.comment.empty() || !lines.empty()) {
-        out_ += " (";
-        metadataBlock(attr.comment, std::move(lines), indent);
-    }
-    out_ += '\n';
+    appendIndent(out_, indent);
+    out_ += "}\n";
 }
 
 void Writer::relationship(const Relationship& rel, int indent, const std::string& path) {

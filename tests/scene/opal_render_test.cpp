@@ -115,6 +115,54 @@ TEST(OpalRender, FramesWriteOneNumberedFilePairPerTimeCode) {
     EXPECT_EQ(runOpalRender(dir, "'" + (dir / "scene.usda").string() + "' -o x.exr --frames 1-2").exitCode, 2);
 }
 
+std::vector<float> exrPixels(const std::filesystem::path& file) {
+    auto in = OIIO::ImageInput::open(file.string());
+    if (!in) return {};
+    const OIIO::ImageSpec& spec = in->spec();
+    std::vector<float> pixels(std::size_t(spec.width) * spec.height * spec.nchannels);
+    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data())) return {};
+    return pixels;
+}
+
+// A light moved by time samples renders, at each frame, what a still scene with the
+// light where the samples put it renders: frame 3 of samples at frames 1 and 5 is halfway.
+TEST(OpalRender, AnAnimatedLightRendersAsTheStillSceneAtEachFrame) {
+    const test::SceneDir dir;
+    dir.writeSphereAsset("sphere");
+    std::string animated = litScene("2000");
+    const std::string still = "    double3 xformOp:translate = (0, 5, 20)\n";
+    animated.replace(animated.find(still), still.size(),
+                     "    double3 xformOp:translate.timeSamples = {\n        1: (-20, 5, 20),\n"
+                     "        5: (20, 5, 20),\n    }\n");
+    const std::string units = "    metersPerUnit = 0.001\n";
+    animated.replace(animated.find(units), units.size(), units + "    timeCodesPerSecond = 10\n");
+    dir.write("animated.usda", animated);
+    dir.write("still.usda", litScene("2000"));
+    const ProcessResult run = runOpalRender(dir, "'" + (dir / "animated.usda").string() + "' -o '" +
+                                                     (dir / "seq.exr").string() + "' --frames 1:3 --step 2");
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const ProcessResult reference =
+        runOpalRender(dir, "'" + (dir / "still.usda").string() + "' -o '" + (dir / "still.exr").string() + "'");
+    ASSERT_EQ(reference.exitCode, 0) << reference.err;
+
+    const std::vector<float> first = exrPixels(dir / "seq.0001.exr"), third = exrPixels(dir / "seq.0003.exr"),
+                             expected = exrPixels(dir / "still.exr");
+    ASSERT_FALSE(expected.empty());
+    ASSERT_EQ(third.size(), expected.size());
+    double largest = 0.0, difference = 0.0, frameDifference = 0.0;
+    for (std::size_t i = 0; i < expected.size(); ++i) {
+        if (!std::isfinite(expected[i])) {  // the background's depth
+            EXPECT_EQ(third[i], expected[i]) << i;
+            continue;
+        }
+        largest = std::max(largest, double(std::abs(expected[i])));
+        difference = std::max(difference, double(std::abs(third[i] - expected[i])));
+        frameDifference = std::max(frameDifference, double(std::abs(first[i] - expected[i])));
+    }
+    EXPECT_LE(difference, 1e-6 * largest);
+    EXPECT_GT(frameDifference, 0.05 * largest);  // frame 1 lights the sphere from the left
+}
+
 TEST(OpalRender, WritesALitMultiLayerExrAndAPreview) {
     const test::SceneDir dir;
     dir.writeSphereAsset("sphere");

@@ -498,9 +498,9 @@ TEST(SceneSource, ShadowFieldFlickerIsReadAndTheTimeReachesTheLight) {
     EXPECT_EQ(flame.time, 0.0);
     PullingDelegate delegate;
     hd::RenderIndex index(delegate);
-    source.setTime(1.5, index);
+    source.setTime(1.5, index, assets);
     EXPECT_EQ(source.light("/Flame").time, 1.5);
-    EXPECT_THROW(source.setTime(std::nan(""), index), Error);
+    EXPECT_THROW(source.setTime(std::nan(""), index, assets), Error);
 
     const std::filesystem::path bad =
         dir.write("bad.usda", light + "    float opal:flicker:amplitude = 2\n}\n");
@@ -510,6 +510,133 @@ TEST(SceneSource, ShadowFieldFlickerIsReadAndTheTimeReachesTheLight) {
     } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find(":5:5: OpalShadowFieldLight </Flame>: attribute 'opal:flicker:amplitude' "
                                              "is 2, expected a value in [0, 1]"),
+                  std::string::npos)
+            << e.what();
+    }
+}
+
+// An animated light and a camera under an animated xform (USD time samples), a still
+// mesh and a material with a single sample: the time-varying prims are named, read at the
+// scene time (linear between samples, held at the ends), and only they are marked dirty
+// and pulled again when the time moves; a host's edit to a still prim stays.
+const char* const AnimatedScene = R"(#usda 1.0
+(
+    timeCodesPerSecond = 24
+)
+
+def "Ball" (
+    references = @./sphere.usda@
+)
+{
+}
+
+def Material "Wax"
+{
+    token opal:preset = "marble"
+    float opal:specularRoughness.timeSamples = {
+        0: 0.25,
+    }
+}
+
+def SphereLight "Key"
+{
+    float inputs:intensity = 99
+    float inputs:intensity.timeSamples = {
+        0: 10,
+        48: 30,
+    }
+    color3f inputs:color.timeSamples = {
+        24: (1, 0.5, 0),
+    }
+    double3 xformOp:translate.timeSamples = {
+        0: (0, 0, 0),
+        24: (24, -12, 0),
+    }
+    uniform token[] xformOpOrder = ["xformOp:translate"]
+}
+
+def Xform "Rig"
+{
+    float xformOp:rotateY.timeSamples = {
+        0: 0,
+        24: 90,
+    }
+    uniform token[] xformOpOrder = ["xformOp:rotateY"]
+
+    def Camera "Camera"
+    {
+        double3 xformOp:translate = (0, 0, 40)
+        uniform token[] xformOpOrder = ["xformOp:translate"]
+    }
+}
+)";
+
+TEST(SceneSource, TimeSampledLightsCamerasAndXformsFollowTheSceneTime) {
+    test::SceneDir dir;
+    dir.writeSphereAsset("sphere");
+    AssetCache assets;
+    const std::filesystem::path file = dir.write("scene.usda", AnimatedScene);
+    Scene scene = readScene(file, assets);
+    EXPECT_EQ(scene.timeVarying, (std::set<hd::SdfPath>{"/Key", "/Rig/Camera"}));
+    EXPECT_DOUBLE_EQ(scene.lights.at("/Key").desc.intensity, 10.0);
+    EXPECT_DOUBLE_EQ(scene.materials.at("/Wax").desc.specularRoughness, 0.25);
+    scene.materials.at("/Wax").desc.specularRoughness = 0.5;  // a host's edit of a still prim
+
+    UsdaSceneSource source(std::move(scene));
+    PullingDelegate delegate;
+    hd::RenderIndex index(delegate);
+    source.populate(index);
+    index.sync();
+    source.setTime(0.5, index, assets);  // time code 12
+    EXPECT_EQ(index.changeTracker().dirtyBits("/Key"), hd::Dirty::Params | hd::Dirty::Transform);
+    EXPECT_NE(index.changeTracker().dirtyBits("/Rig/Camera"), hd::Dirty::Clean);
+    EXPECT_EQ(index.changeTracker().dirtyBits("/Ball"), hd::Dirty::Clean);
+    EXPECT_EQ(index.changeTracker().dirtyBits("/Wax"), hd::Dirty::Clean);
+    index.sync();
+
+    const auto& key = static_cast<const PullingPrim<hd::LightDesc>&>(*index.sprim("/Key"));
+    EXPECT_DOUBLE_EQ(key.desc.intensity, 15.0);              // 10 + (30 - 10) * 12 / 48
+    expectRgb(key.desc.color, Rgb(1.0, 0.5, 0.0));           // one sample: held everywhere
+    expectNear(apply({0, 0, 0}, key.desc.transform), {12, -6, 0});
+    const auto& camera = static_cast<const PullingPrim<hd::CameraDesc>&>(*index.sprim("/Rig/Camera"));
+    const double a = 45.0 * M_PI / 180.0;                    // rotateY 45 at time code 12
+    expectNear(apply({0, 0, 0}, camera.desc.transform), {40 * std::sin(a), 0, 40 * std::cos(a)});
+    EXPECT_DOUBLE_EQ(source.scene().materials.at("/Wax").desc.specularRoughness, 0.5);
+
+    source.setTime(10.0, index, assets);  // time code 240: held at the last samples
+    EXPECT_DOUBLE_EQ(source.light("/Key").intensity, 30.0);
+    expectNear(apply({0, 0, 0}, source.light("/Key").transform), {24, -12, 0});
+}
+
+TEST(SceneSource, AnimationOutsideLightsCamerasAndXformsIsRefusedWithItsLocation) {
+    test::SceneDir dir;
+    AssetCache assets;
+    const std::string material =
+        "#usda 1.0\ndef Material \"M\"\n{\n    float opal:eta.timeSamples = {\n        0: 1.3,\n        10: 1.5,\n    }\n}\n";
+    const std::string visibility =
+        "#usda 1.0\ndef Xform \"X\"\n{\n    token visibility.timeSamples = {\n        0: \"inherited\",\n"
+        "        10: \"invisible\",\n    }\n}\n";
+    const std::string late = "#usda 1.0\ndef SphereLight \"L\"\n{\n    float inputs:intensity.timeSamples = {\n"
+                             "        0: 10,\n        10: -10,\n    }\n}\n";
+    for (const auto& [text, message] : std::vector<std::pair<std::string, std::string>>{
+             {material, ":4:5: Material </M>: attribute 'opal:eta' has timeSamples, which Opal reads on lights, "
+                        "cameras and xformOps only"},
+             {visibility, ":4:5: Xform </X>: attribute 'visibility' has timeSamples; animated visibility is not "
+                          "supported"}}) {
+        try {
+            (void)readScene(dir.write("scene.usda", text), assets);
+            FAIL() << text;
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
+        }
+    }
+    const std::filesystem::path file = dir.write("late.usda", late);
+    EXPECT_DOUBLE_EQ(readScene(file, assets, 4.0).lights.at("/L").desc.intensity, 2.0);
+    try {
+        (void)readScene(file, assets, 9.0);  // -8 there
+        FAIL() << "a negative intensity was read";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("late.usda:4:5: SphereLight </L>: attribute 'inputs:intensity'"),
                   std::string::npos)
             << e.what();
     }
