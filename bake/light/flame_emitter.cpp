@@ -1,6 +1,6 @@
 #include "bake/light/flame_emitter.h"
 
-#include "bake/light/blackbody.h"
+#include "schema/scatter/blackbody.h"
 #include "bake/light/emitter_shapes.h"
 #include "schema/error.h"
 

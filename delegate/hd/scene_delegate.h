@@ -43,7 +43,9 @@ struct LightFlicker {
     std::uint64_t seed = 0;
 };
 
-// UsdLux semantics: emitted radiance = color * intensity * 2^exposure; with `normalize` a
+// UsdLux semantics: emitted radiance = color * intensity * 2^exposure, times the black
+// body colour of colorTemperature (kelvin, unit luminance in ACEScg) when
+// enableColorTemperature is on; with `normalize` a
 // sphere light's power does not depend on its size. A sphere with treatAsPoint is a
 // point light whose intensity is radiant intensity / pi (as UsdLux's "treat as point").
 // Shaping (a spot): a cone of coneAngle degrees around the light's -Z axis, softened by
@@ -55,6 +57,8 @@ struct LightDesc {
     Rgb color{1.0, 1.0, 1.0};
     double intensity = 1.0;
     double exposure = 0.0;
+    bool enableColorTemperature = false;
+    double colorTemperature = 6500.0;  // kelvin, 500 to 40000 (UsdLux's fallback 6500)
     bool normalize = false;
     // SphereLight
     double radius = 0.5;

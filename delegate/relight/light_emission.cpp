@@ -1,6 +1,7 @@
 #include "delegate/relight/light_emission.h"
 
 #include "schema/error.h"
+#include "schema/scatter/blackbody.h"
 
 #include <algorithm>
 #include <cmath>
@@ -15,6 +16,7 @@ std::string describe(const hd::LightDesc& d) {
     text.precision(6);
     text << "inputs:intensity " << d.intensity << " x 2^(inputs:exposure " << d.exposure << ") x inputs:color (" << d.color.x
          << ", " << d.color.y << ", " << d.color.z << ")";
+    if (d.enableColorTemperature) text << " x black body (inputs:colorTemperature " << d.colorTemperature << " K)";
     return text.str();
 }
 
@@ -28,7 +30,14 @@ Rgb emittedRadiance(const hd::LightDesc& d) {
         throw Error(describe(d) + ": intensity and color must be finite and non-negative, exposure finite");
     // exp2 of a huge exposure is +inf in double: the product check below catches it (an
     // exposure far below zero underflows to 0, a dark light).
-    const Rgb le = d.color * (d.intensity * std::exp2(d.exposure));
+    Rgb color = d.color;
+    if (d.enableColorTemperature) {
+        if (!(d.colorTemperature >= 500.0 && d.colorTemperature <= 40000.0))
+            throw Error(describe(d) + ": inputs:colorTemperature must be within 500 to 40000 K");
+        const Imath::V3d body = blackbodyAcescg(d.colorTemperature);
+        color = Rgb(color.x * body.x, color.y * body.y, color.z * body.z);
+    }
+    const Rgb le = color * (d.intensity * std::exp2(d.exposure));
     if (!(std::max({le.x, le.y, le.z}) <= kMaxEmittedRadiance)) {
         std::ostringstream bound;
         bound << kMaxEmittedRadiance;

@@ -1,5 +1,6 @@
-// The emitted radiance of a UsdLux light, L_e = color * intensity * 2^exposure, formed in
-// double and checked before any of it is stored in float, and the bounds that keep every
+// The emitted radiance of a UsdLux light, L_e = color * intensity * 2^exposure (times the
+// black body colour of inputs:colorTemperature when it is enabled; docs/ARCHITECTURE.md
+// #light-emission), formed in double and checked before any of it is stored in float, and the bounds that keep every
 // radiometric value the delegate forms from it finite.
 //
 // Why these bounds: the delegate sums light in float. A light's L_e is at most
@@ -20,8 +21,9 @@ inline constexpr double kMaxEmittedRadiance = 1e20;
 inline constexpr double kMaxSampleIrradiance = 1e25;
 
 // L_e per channel. Throws opal::Error naming the attributes (inputs:intensity,
-// inputs:exposure, inputs:color) and their values when one is not finite, the color or
-// intensity is negative, or the product exceeds kMaxEmittedRadiance in any channel.
+// inputs:exposure, inputs:color, inputs:colorTemperature) and their values when one is not
+// finite, the color or intensity is negative, an enabled temperature is outside 500 to
+// 40000 K, or the product exceeds kMaxEmittedRadiance in any channel.
 Rgb emittedRadiance(const hd::LightDesc& desc);
 
 }  // namespace opal

@@ -22,8 +22,10 @@ void readLightApi(PrimReader& reader, hd::LightDesc& desc) {
     desc.normalize = reader.get<Bool>("inputs:normalize").value_or(desc.normalize);
     reader.requireFallback<Float>("inputs:diffuse", 1.0f, "per-light diffuse multipliers are not implemented");
     reader.requireFallback<Float>("inputs:specular", 1.0f, "per-light specular multipliers are not implemented");
-    reader.requireFallback<Bool>("inputs:enableColorTemperature", false, "use inputs:color");
-    reader.ignore("inputs:colorTemperature");  // only used when enableColorTemperature is on
+    desc.enableColorTemperature =
+        reader.get<Bool>("inputs:enableColorTemperature").value_or(desc.enableColorTemperature);
+    desc.colorTemperature =
+        reader.real("inputs:colorTemperature", Float, Bounds::closed(500.0, 40000.0)).value_or(desc.colorTemperature);
     reader.requireFallback<Bool>("collection:lightLink:includeRoot", true, "light linking is not implemented");
     reader.requireFallback<Bool>("collection:shadowLink:includeRoot", true, "shadow linking is not implemented");
     reader.ignore("light:shaderId");

@@ -1,6 +1,7 @@
 // The scene's lights (UsdLux, plus Opal's OpalShadowFieldLight) read into the delegate's
 // hd::LightDesc. Every light takes LightAPI's inputs:intensity (>= 0), inputs:exposure,
-// inputs:color (>= 0) and inputs:normalize with USD's fallbacks; then
+// inputs:color (>= 0), inputs:enableColorTemperature, inputs:colorTemperature (kelvin,
+// 500 to 40000) and inputs:normalize with USD's fallbacks; then
 //   SphereLight           inputs:radius, treatAsPoint, inputs:shaping:cone:angle and
 //                         inputs:shaping:cone:softness (also spelt shaping:cone:*, as
 //                         before USD 21.05); a cone angle makes it a spot light

@@ -1,8 +1,8 @@
 // The XYZ -> ACEScg matrices against the ACEScg definition (Academy S-2014-004 primaries
 // and white) and against OpenColorIO's own ACEScg <-> CIE XYZ (D65) Bradford transform,
 // and the black-body colours the light bake emits against the same transform.
-#include "bake/light/acescg_from_xyz.h"
-#include "bake/light/blackbody.h"
+#include "schema/scatter/acescg_from_xyz.h"
+#include "schema/scatter/blackbody.h"
 
 #include <Imath/ImathMatrix.h>
 #include <OpenColorIO/OpenColorIO.h>

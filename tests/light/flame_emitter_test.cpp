@@ -1,7 +1,7 @@
 // The flame's colour: black-body chromaticities against the CIE Planckian locus, and the
 // flame's core hotter and whiter than its rim.
-#include "bake/light/acescg_from_xyz.h"
-#include "bake/light/blackbody.h"
+#include "schema/scatter/acescg_from_xyz.h"
+#include "schema/scatter/blackbody.h"
 #include "bake/light/emitter_scene.h"
 #include "bake/light/flame_emitter.h"
 #include "schema/error.h"

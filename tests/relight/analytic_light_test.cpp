@@ -3,6 +3,8 @@
 #include "delegate/relight/fresnel_response.h"
 #include "raytrace/ray_scene.h"
 #include "schema/error.h"
+#include "schema/scatter/acescg_from_xyz.h"
+#include "schema/scatter/blackbody.h"
 #include "schema/scatter/dipole.h"
 #include "schema/scatter/fresnel_moments.h"
 
@@ -146,6 +148,47 @@ TEST(AnalyticLight, OccluderCastsAShadow) {
     EXPECT_EQ(irradianceAt(light, oneSample({0.5f, 0, 0.5f}, {0, 1, 0}), 1.3, &scene).exact.x, 0.0f);
     EXPECT_GT(irradianceAt(light, oneSample({0.5f, 0, 0.5f}, {0, 1, 0}), 1.3, nullptr).exact.x, 0.0f);
     EXPECT_GT(irradianceAt(light, oneSample({3.0f, 0, 0.5f}, {0, 1, 0}), 1.3, &scene).exact.x, 0.0f);
+}
+
+// UsdLux's colour temperature: the light's colour times a black body of unit luminance.
+// Truth: the CIE xy of the irradiance (ACEScg back to XYZ) is the black body's, computed
+// from Planck's law and the matching functions; its luminance is the white light's.
+TEST(AnalyticLight, ColorTemperatureTintsTheLightAtUnitLuminance) {
+    hd::LightDesc desc;
+    desc.kind = hd::LightKind::Sphere;
+    desc.treatAsPoint = true;
+    desc.intensity = 2.0;
+    desc.transform = translation(0.0, 3.0, 0.0);
+    const PlacedSamples sample = oneSample({0, 0, 0}, {0, 1, 0});
+    const Imath::V3f white = irradianceAt(AnalyticLight::fromDesc(desc), sample, 1.3).exact;
+    Imath::M33d toXyz;  // ACEScg -> XYZ (D65), the inverse of kXyzD65ToAcescg
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) toXyz[i][j] = kXyzD65ToAcescg[i][j];
+    toXyz.invert();
+    desc.enableColorTemperature = true;
+    for (double kelvin : {1900.0, 2700.0, 6500.0, 12000.0}) {
+        desc.colorTemperature = kelvin;
+        const Imath::V3f e = irradianceAt(AnalyticLight::fromDesc(desc), sample, 1.3).exact;
+        const Imath::V3d rgb(e.x, e.y, e.z);
+        const Imath::V3d xyz(toXyz[0][0] * rgb.x + toXyz[0][1] * rgb.y + toXyz[0][2] * rgb.z,
+                             toXyz[1][0] * rgb.x + toXyz[1][1] * rgb.y + toXyz[1][2] * rgb.z,
+                             toXyz[2][0] * rgb.x + toXyz[2][1] * rgb.y + toXyz[2][2] * rgb.z);
+        const double sum = xyz.x + xyz.y + xyz.z;
+        const Imath::V2d expected = blackbodyChromaticity(kelvin);
+        EXPECT_NEAR(xyz.x / sum, expected.x, 1e-5) << kelvin;
+        EXPECT_NEAR(xyz.y / sum, expected.y, 1e-5) << kelvin;
+        const double y = kAcescgLuminance.dot(Imath::V3d(e)), whiteY = kAcescgLuminance.dot(Imath::V3d(white));
+        EXPECT_NEAR(y, whiteY, 1e-5 * whiteY) << kelvin;
+        if (kelvin < 3000.0) EXPECT_GT(e.x, 2.0f * e.z) << "a warm light is red-orange at " << kelvin;
+    }
+    desc.colorTemperature = 100.0;
+    try {
+        (void)AnalyticLight::fromDesc(desc);
+        FAIL() << "100 K was accepted";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("inputs:colorTemperature must be within 500 to 40000 K"), std::string::npos)
+            << e.what();
+    }
 }
 
 TEST(AnalyticLight, RejectsDomesAndNonFiniteParameters) {

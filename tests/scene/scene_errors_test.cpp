@@ -44,6 +44,8 @@ std::vector<ErrorCase> errorCases() {
          ":4:5: DistantLight </P>: attribute 'inputs:color' is (1, -0.5, 1), expected every component >= 0"},
         {"ConeAngleOutOfRange", prim("SphereLight", "    float inputs:shaping:cone:angle = 200\n"),
          ":4:5: SphereLight </P>: attribute 'inputs:shaping:cone:angle' is 200, expected a value in [0, 180]"},
+        {"ColorTemperatureOutOfRange", prim("SphereLight", "    float inputs:colorTemperature = 100\n"),
+         ":4:5: SphereLight </P>: attribute 'inputs:colorTemperature' is 100, expected a value in [500, 40000]"},
         {"LightMultiplier", prim("SphereLight", "    float inputs:diffuse = 0.5\n"),
          ":4:5: SphereLight </P>: attribute 'inputs:diffuse' differs from its fallback value, the only one Opal "
          "supports (per-light diffuse multipliers are not implemented)"},

@@ -101,6 +101,8 @@ def Xform "Lights"
     def DistantLight "Sun"
     {
         float inputs:angle = 1
+        bool inputs:enableColorTemperature = 1
+        float inputs:colorTemperature = 2700
     }
     def DomeLight "Sky"
     {
@@ -236,6 +238,9 @@ TEST_F(SmallSceneTest, DistantLightFallsBackToUsdLuxIntensity) {
     EXPECT_DOUBLE_EQ(sun.desc.intensity, 50000);
     EXPECT_DOUBLE_EQ(sun.desc.angle, 1);
     expectRgb(sun.desc.color, {1, 1, 1});
+    EXPECT_TRUE(sun.desc.enableColorTemperature);
+    EXPECT_DOUBLE_EQ(sun.desc.colorTemperature, 2700);
+    EXPECT_FALSE(scene.lights.at("/Lights/Flame").desc.enableColorTemperature);
 }
 
 TEST_F(SmallSceneTest, DomeLightTextureIsAnchoredAtTheScene) {

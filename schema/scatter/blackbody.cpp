@@ -1,6 +1,6 @@
-#include "bake/light/blackbody.h"
+#include "schema/scatter/blackbody.h"
 
-#include "bake/light/acescg_from_xyz.h"
+#include "schema/scatter/acescg_from_xyz.h"
 
 #include "schema/error.h"
 

@@ -1,5 +1,5 @@
 // CIE XYZ to Opal's working space, ACEScg (AP1 primaries, ACES white x = 0.32168,
-// y = 0.33767, about D60), for colours the light bake computes from spectra.
+// y = 0.33767, about D60), for colours computed from spectra (a flame, a colour temperature).
 //
 // XYZ from the CIE 1931 matching functions is taken as referred to a D65 adopted white, as
 // the colour management does everywhere else (OCIO's "CIE-XYZ-D65" connection space; a
