@@ -6,6 +6,7 @@
 #include "schema/error.h"
 
 #include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include <Imath/ImathMatrixAlgo.h>
@@ -15,6 +16,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <utility>
 
 namespace opal {
 
@@ -55,7 +57,8 @@ LoadedShadowField::LoadedShadowField(ShadowField f)
     : field(std::move(f)),
       lookup(field),
       layout(std::max<std::uint32_t>(1, field.mapFaceSize / kDecodeDivisor)),
-      cosine(layout) {
+      cosine(layout),
+      maps(lookup, layout.faceSize()) {
     // The mean of I(w) over directions, from the outer shell's 24 coarsest directions
     // (enough for a highlight's strength: the far field is smooth by construction).
     const CubeMapLayout directions(2);
@@ -113,33 +116,63 @@ struct ShadowFieldLight::Texels {
     Imath::V3d direction{0.0};
 };
 
+// A worker's buffers for arrivalInField, all zero (and `touched` empty) between samples.
+struct ShadowFieldLight::Scratch {
+    std::vector<Imath::V3f> radiance;  // per texel of the decode layout
+    std::vector<std::uint8_t> seen;
+    std::vector<std::uint32_t> touched;
+    std::vector<Texels> blocks;
+
+    explicit Scratch(const LoadedShadowField& f)
+        : radiance(f.layout.texels(), Imath::V3f(0.0f)), seen(f.layout.texels(), 0), blocks(f.blocks) {}
+};
+
+// The stencil's weighted sum of the sparse maps (the interpolated field, incidentRadiance's
+// value up to rounding), clamped, weighed by each texel's cosine integral and gathered into
+// visibility blocks; then one occlusion ray per lit block.
 LightArrival ShadowFieldLight::arrivalInField(const Imath::V3d& x, const Imath::V3d& n, const RayScene* scene,
-                                              float offset) const {
+                                              float offset, Scratch& s) const {
     const Imath::V3d p = toLight(x), nl = n * rotation_.transposed();
-    const std::vector<Imath::V3f> radiance = field_->lookup.incidentRadiance(p, field_->layout.faceSize());
-    std::vector<Texels> blocks(field_->blocks);
-    for (std::uint32_t k = 0; k < radiance.size(); ++k) {
-        const Imath::V3f& l = radiance[k];
+    const FieldStencil stencil = field_->lookup.stencil(p);
+    for (std::uint32_t i = 0; i < stencil.count; ++i) {
+        const float weight = float(stencil.maps[i].weight);
+        const std::span<const std::uint32_t> texels = field_->maps.texels(stencil.maps[i].map);
+        const std::span<const Imath::V3f> terms = field_->maps.terms(stencil.maps[i].map);
+        for (std::size_t j = 0; j < texels.size(); ++j) {
+            const std::uint32_t k = texels[j];
+            if (!s.seen[k]) s.touched.push_back(k);
+            s.seen[k] = 1;
+            s.radiance[k] += terms[j] * weight;
+        }
+    }
+    for (const std::uint32_t k : s.touched) {
+        // Radiance is never negative: what the truncated Haar series rings below 0 is 0.
+        const Imath::V3f l(std::max(0.0f, s.radiance[k].x), std::max(0.0f, s.radiance[k].y),
+                           std::max(0.0f, s.radiance[k].z));
+        s.radiance[k] = Imath::V3f(0.0f);
+        s.seen[k] = 0;
         if (l.x + l.y + l.z <= 0.0f) continue;
         const double w = field_->cosine.weight(k, nl);
         if (w <= 0.0) continue;
-        Texels& block = blocks[field_->texelBlocks[k]];
+        Texels& block = s.blocks[field_->texelBlocks[k]];
         const Imath::V3d e = Imath::V3d(l) * w;
         block.e += e;
         block.direction += Imath::V3d(field_->texelDirections[k]) * channelSum(e);
     }
+    s.touched.clear();
     Imath::V3d total(0.0);
     double cosineSum = 0.0;
     const Imath::V3f origin = Imath::V3f(x + n * double(offset));
-    for (const Texels& block : blocks) {
-        if (channelSum(block.e) <= 0.0) continue;
-        const Imath::V3d d = block.direction.normalized();
+    for (Texels& block : s.blocks) {
+        const Texels lit = std::exchange(block, Texels{});
+        if (channelSum(lit.e) <= 0.0) continue;
+        const Imath::V3d d = lit.direction.normalized();
         if (scene) {
             const double reach = shadowReach(p, d) * scale_ * (1.0 - 1e-4);
             if (reach > 0.0 && scene->occluded(Ray(origin, Imath::V3f(d * rotation_), 0.0f, float(reach)))) continue;
         }
-        total += block.e;
-        cosineSum += channelSum(block.e) * std::max(0.0, d.dot(nl));
+        total += lit.e;
+        cosineSum += channelSum(lit.e) * std::max(0.0, d.dot(nl));
     }
     const double sum = channelSum(total);
     if (!(sum > 0.0)) return {};
@@ -172,11 +205,13 @@ std::vector<LightArrival> ShadowFieldLight::arrivals(const PlacedSamples& sample
     const std::size_t n = samples.positions.size();
     std::vector<LightArrival> result(n);
     const double outer = field_->field.radii.back();
+    tbb::enumerable_thread_specific<Scratch> scratch([&] { return Scratch(*field_); });
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 64), [&](const tbb::blocked_range<std::size_t>& range) {
+        Scratch& s = scratch.local();
         for (std::size_t i = range.begin(); i != range.end(); ++i) {
             const Imath::V3d x(samples.positions[i]), normal(samples.normals[i]);
             const bool beyond = (toLight(x) - field_->field.centre).length() > outer;
-            result[i] = beyond ? arrivalBeyond(x, normal, scene, offset) : arrivalInField(x, normal, scene, offset);
+            result[i] = beyond ? arrivalBeyond(x, normal, scene, offset) : arrivalInField(x, normal, scene, offset, s);
         }
     });
     return result;

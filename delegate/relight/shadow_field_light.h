@@ -28,6 +28,7 @@
 #include "delegate/hd/scene_delegate.h"
 #include "delegate/relight/analytic_light.h"
 #include "delegate/relight/irradiance.h"
+#include "delegate/relight/sparse_field_maps.h"
 #include "schema/asset/cube_map_cosine.h"
 #include "schema/asset/shadow_field_lookup.h"
 
@@ -51,6 +52,7 @@ struct LoadedShadowField {
     // inside a 2 x 2 texel block.
     CubeMapLayout layout;
     CubeMapCosineIntegral cosine;
+    SparseFieldMaps maps;  // every map at `layout`'s face size, its nonzero texels
     Imath::V3d meanIntensity{0.0};  // of the far-field point light, over all directions
     // Per texel of `layout`: its centre direction, and its visibility block (2 x 2 texels of
     // `layout`, 4 x 4 of the maps).
@@ -86,7 +88,9 @@ public:
 
 private:
     struct Texels;
-    LightArrival arrivalInField(const Imath::V3d& x, const Imath::V3d& n, const RayScene* scene, float offset) const;
+    struct Scratch;
+    LightArrival arrivalInField(const Imath::V3d& x, const Imath::V3d& n, const RayScene* scene, float offset,
+                                Scratch& scratch) const;
     LightArrival arrivalBeyond(const Imath::V3d& x, const Imath::V3d& n, const RayScene* scene, float offset) const;
     Imath::V3d toLight(const Imath::V3d& world) const;  // a world point in the light's frame (mm)
     double shadowReach(const Imath::V3d& pointLight, const Imath::V3d& directionLight) const;

@@ -78,7 +78,8 @@ FieldStencil ShadowFieldLookup::stencil(const Imath::V3d& point) const {
     return s;
 }
 
-std::vector<Imath::V3f> ShadowFieldLookup::blend(std::span<const MapWeight> maps, std::uint32_t size) const {
+// The blended maps' texels at face size `size`, RGB interleaved, before the clamp.
+std::vector<float> ShadowFieldLookup::blendCoefficients(std::span<const MapWeight> maps, std::uint32_t size) const {
     // In the Mallat layout a face's coefficients of the coarser levels fill its top-left
     // size x size corner, and their inverse transform there is the face averaged over
     // blocks of (n / size)^2 texels, times n / size (orthonormal Haar).
@@ -100,13 +101,27 @@ std::vector<Imath::V3f> ShadowFieldLookup::blend(std::span<const MapWeight> maps
     for (std::uint32_t face = 0; face < 6; ++face)
         if (lit[face])
             haarInverse2D<float>(std::span(coefficients).subspan(std::size_t(face) * coarse * 3, coarse * 3), size, 3);
-    // Radiance is never negative: what the truncated Haar series rings below 0 is 0.
     const float scale = float(size) / float(n);
-    std::vector<Imath::V3f> radiance(6 * std::size_t(coarse));
+    for (float& c : coefficients) c *= scale;
+    return coefficients;
+}
+
+std::vector<Imath::V3f> ShadowFieldLookup::blend(std::span<const MapWeight> maps, std::uint32_t size) const {
+    const std::vector<float> texels = blendCoefficients(maps, size);
+    // Radiance is never negative: what the truncated Haar series rings below 0 is 0.
+    std::vector<Imath::V3f> radiance(texels.size() / 3);
     for (std::size_t i = 0; i < radiance.size(); ++i)
-        radiance[i] = {std::max(0.0f, coefficients[3 * i] * scale), std::max(0.0f, coefficients[3 * i + 1] * scale),
-                       std::max(0.0f, coefficients[3 * i + 2] * scale)};
+        radiance[i] = {std::max(0.0f, texels[3 * i]), std::max(0.0f, texels[3 * i + 1]), std::max(0.0f, texels[3 * i + 2])};
     return radiance;
+}
+
+std::vector<Imath::V3f> ShadowFieldLookup::mapTerms(std::uint64_t index, std::uint32_t faceSize) const {
+    requireFaceSize(faceSize);
+    const MapWeight one{index, 1.0};
+    const std::vector<float> texels = blendCoefficients({&one, 1}, faceSize);
+    std::vector<Imath::V3f> terms(texels.size() / 3);
+    for (std::size_t i = 0; i < terms.size(); ++i) terms[i] = {texels[3 * i], texels[3 * i + 1], texels[3 * i + 2]};
+    return terms;
 }
 
 std::vector<Imath::V3f> ShadowFieldLookup::map(std::uint64_t index) const {
@@ -134,10 +149,14 @@ std::vector<Imath::V3f> ShadowFieldLookup::incidentRadiance(const Imath::V3d& po
     return incidentRadiance(point, mapLayout_.faceSize());
 }
 
-std::vector<Imath::V3f> ShadowFieldLookup::incidentRadiance(const Imath::V3d& point, std::uint32_t faceSize) const {
+void ShadowFieldLookup::requireFaceSize(std::uint32_t faceSize) const {
     if (faceSize == 0 || (faceSize & (faceSize - 1)) != 0 || faceSize > mapLayout_.faceSize())
         throw Error("shadow field lookup: face size " + std::to_string(faceSize) +
                     " is not a power of two up to the maps' " + std::to_string(mapLayout_.faceSize()));
+}
+
+std::vector<Imath::V3f> ShadowFieldLookup::incidentRadiance(const Imath::V3d& point, std::uint32_t faceSize) const {
+    requireFaceSize(faceSize);
     const FieldStencil s = stencil(point);
     if (s.region != FieldRegion::Beyond) return blend({s.maps.data(), s.count}, faceSize);
     const Imath::V3d irradiance = farIntensity(s.direction) / (s.radius * s.radius);

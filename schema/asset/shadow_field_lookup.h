@@ -16,7 +16,7 @@
 // Interpolation is linear in the maps, so it is done on their Haar coefficients, then one
 // inverse transform gives the map; texels the truncated Haar series rings below zero are
 // clamped to 0 (radiance is never negative). The lookup keeps a reference to the field.
-// Cost at the shipped sizes: about 0.13 ms per irradiance or cube-map query (one blend,
+// Cost at the shipped sizes: about 0.13 ms per full-size irradiance or cube-map query (one blend,
 // one inverse Haar transform of 6 x 32 x 32 RGB texels, one cosine-weighted sum).
 #pragma once
 
@@ -77,9 +77,14 @@ public:
     Imath::V3d farIntensity(const Imath::V3d& direction) const;
     // One sample point's map, decoded.
     std::vector<Imath::V3f> map(std::uint64_t index) const;
+    // One sample point's map averaged to face size `faceSize` (as incidentRadiance), before
+    // the clamp to 0: the terms a weighted sum of maps adds up, since interpolation is linear.
+    std::vector<Imath::V3f> mapTerms(std::uint64_t index, std::uint32_t faceSize) const;
 
 private:
     std::vector<Imath::V3f> blend(std::span<const MapWeight> maps, std::uint32_t faceSize) const;
+    std::vector<float> blendCoefficients(std::span<const MapWeight> maps, std::uint32_t faceSize) const;
+    void requireFaceSize(std::uint32_t faceSize) const;
     std::uint32_t directionSample(std::uint32_t face, std::int32_t u, std::int32_t v) const;
     void addDirectionWeights(std::uint32_t shell, const Imath::V3d& direction, double weight,
                              FieldStencil& stencil) const;
