@@ -2,8 +2,13 @@
 
 #include "delegate/hd/aov.h"
 #include "delegate/output/exr_writer.h"
+#include "delegate/output/preview_writer.h"
 #include "examples/opal-view/color_panel.h"
+#include "examples/opal-view/delegate_panels.h"
+#include "examples/opal-view/keyboard_help.h"
+#include "examples/opal-view/probe_tooltip.h"
 #include "examples/opal-view/core/default_scene.h"
+#include "examples/opal-view/core/pixel_probe.h"
 #include "examples/opal-view/light_panel.h"
 #include "examples/opal-view/material_panel.h"
 #include "examples/opal-view/screenshot.h"
@@ -13,6 +18,7 @@
 
 #include <glad/gl.h>
 #include <imgui.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <iostream>
@@ -74,8 +80,9 @@ void Viewer::open(const std::filesystem::path& file) {
         ++settings_.version;
     }
     for (const std::string& warning : model_.takeLoadWarnings()) std::cerr << "opal-view: warning: " << warning << '\n';
-    window_.setTitle("opal-view - " + file.string());
+    updateTitle();
     requested_ = shown_ = {};
+    shownImage_ = {};
     shownApplied_ = 0;
 }
 
@@ -90,6 +97,7 @@ void Viewer::frame() {
     if (model_.isOpen()) drawInterface();
     collectMessages();
     if (script_ && script_->step(*this)) script_.reset();
+    updateTitle();
     // What is shown (color's alpha travels with it), or everything while an EXR waits.
     if (everyAov_) model_.setRenderedAovs({});
     else model_.setRenderedAovs(settings_.aov == "color" ? std::vector<std::string>{"color"}
@@ -111,18 +119,47 @@ void Viewer::frame() {
     window_.swapBuffers();
 }
 
+void Viewer::carryOut(const SaveRequest& save) {
+    try {
+        if (save.kind == SaveKind::Scene) model_.saveScene(save.file);
+        else savePng(save.file);
+        menu_.status = "wrote " + save.file.string();
+    } catch (const std::exception& e) {
+        menu_.status = std::string("error: ") + e.what();
+        std::cerr << "opal-view: error: " << e.what() << '\n';
+    }
+}
+
+void Viewer::updateTitle() {
+    const std::string title = model_.title();
+    if (title == title_) return;
+    title_ = title;
+    window_.setTitle(title);
+}
+
 void Viewer::drawInterface() {
-    handleViewportInput(model_);
-    ImGui::SetNextWindowPos(ImVec2(10.0f, 10.0f), ImGuiCond_FirstUseEver);
+    // A slider held or a light dragged is one undo step, however many frames it lasts.
+    model_.setMergingEdits(ImGui::IsAnyItemActive() || ImGui::IsMouseDown(ImGuiMouseButton_Left));
+    if (const std::optional<SaveRequest> save = menu_.draw(model_, panels_)) carryOut(*save);
+    handleViewportInput(model_, panels_);
+    ImGui::SetNextWindowPos(ImVec2(10.0f, 30.0f), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(PanelWidth, 0.0f), ImGuiCond_FirstUseEver);
     // Above the heads-up line, however small the window.
     const float tallest = std::max(ImGui::GetIO().DisplaySize.y - HudHeight, 100.0f);
     ImGui::SetNextWindowSizeConstraints(ImVec2(PanelWidth, 0.0f), ImVec2(PanelWidth, tallest));
     ImGui::Begin("Look");
     drawMaterialPanel(model_);
-    drawLightPanel(model_);
+    drawLightPanel(model_, lightProblem_);
     drawColorPanel(display_, settings_);
     ImGui::End();
+    drawKeyboardHelp(panels_.help);
+    drawStatsPanel(*renderer_.delegate, panels_.stats);
+    if (panels_.settings) {
+        const std::map<hd::Token, hd::Value> before = renderer_.delegate->renderSettings();
+        drawRenderSettingsPanel(*renderer_.delegate, panels_.settings, settingsProblem_);
+        if (renderer_.delegate->renderSettings() != before) model_.settingsChanged();
+    }
+    if (panels_.probe) drawProbeTooltip(model_, shownImage_, shownAov_);
     drawHud(model_, hud_);
 }
 
@@ -181,6 +218,10 @@ void Viewer::showConverted() {
     if (!done) return;
     if (!done->error.empty()) hud_.message = "error: " + done->error;
     else if (!done->image.empty()) picture_.upload(done->image);
+    if (done->error.empty()) {
+        shownImage_ = std::move(done->image);
+        shownAov_ = settings_.aov;
+    }
     shown_ = done->tag;
     // A pass of the frame the newest sync started: the picture shows that edit.
     if (shown_.passes >= 1 && shown_.applied > shownApplied_) {
@@ -245,6 +286,24 @@ void Viewer::saveExr(const std::filesystem::path& file) {
     for (const std::string& warning : warnings) std::cerr << "opal-view: warning: " << warning << '\n';
     std::cout << "opal-view: wrote " << file.string() << std::endl;
     everyAov_ = false;
+}
+
+void Viewer::savePng(const std::filesystem::path& file) {
+    if (file.extension() != ".png") throw Error("save png " + file.string() + ": the file must end in .png");
+    const Image linear = mappedImage(model_.session().buffer(settings_.aov));
+    if (linear.empty()) throw Error("save png " + file.string() + ": nothing is rendered yet");
+    Image picture;
+    // Isolated: this thread must not pick up the renderer's tiles meanwhile.
+    tbb::this_task_arena::isolate([&] { picture = display_.toFile(linear, settings_.aov, settings_.exposure); });
+    writePreview(file, picture);
+    std::cout << "opal-view: wrote " << file.string() << std::endl;
+}
+
+std::string Viewer::probe(int x, int y) {
+    everyAov_ = false;
+    const PixelProbe probe{x, y, probeAovs(model_.session().buffers(), x, y), shownAov_,
+                           shownValue(shownImage_, x, y, model_.width(), model_.height())};
+    return probeReport(probe);
 }
 
 }  // namespace opal::view

@@ -13,6 +13,8 @@
 #include "examples/opal-view/display_settings.h"
 #include "examples/opal-view/hud.h"
 #include "examples/opal-view/imgui_layer.h"
+#include "examples/opal-view/menu_bar.h"
+#include "examples/opal-view/panel_visibility.h"
 #include "examples/opal-view/picture_texture.h"
 #include "examples/opal-view/view_options.h"
 #include "examples/opal-view/window.h"
@@ -41,6 +43,8 @@ public:
     void requestScreenshot(const std::filesystem::path& file) override;
     void renderEveryAov() override;
     void saveExr(const std::filesystem::path& file) override;
+    void savePng(const std::filesystem::path& file) override;
+    std::string probe(int x, int y) override;
     void quit() override { quit_ = true; }
     void beginMeasure() override;
     std::string endMeasure() override;
@@ -51,6 +55,8 @@ private:
     void collectMessages();
     void refreshPicture();
     void showConverted();
+    void updateTitle();
+    void carryOut(const SaveRequest& save);
     // The frame the buffers hold now (passes, syncs, display settings).
     PictureTag currentTag() const;
 
@@ -63,6 +69,12 @@ private:
     std::optional<ScriptRunner> script_;
     std::optional<std::filesystem::path> screenshot_;
     HudFigures hud_;
+    Image shownImage_;      // the display-referred picture on screen (for the probe)
+    std::string shownAov_;  // what it shows
+    std::string title_;
+    MenuBar menu_;
+    PanelVisibility panels_;
+    std::string lightProblem_, settingsProblem_;
     std::string renderError_;
     PictureTag requested_, shown_;
     int shownApplied_ = 0;                 // the newest submission a shown picture holds

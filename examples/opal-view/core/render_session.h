@@ -16,6 +16,7 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <set>
 #include <string>
 #include <thread>
 #include <vector>
@@ -48,6 +49,7 @@ public:
     RenderSession& operator=(const RenderSession&) = delete;
 
     // The interface's scene after its edits, the prims they dirtied, and the viewport.
+    // Lights may come and go (the index follows); other prims keep their paths.
     // Returns the submission's number (1, 2, ...; the first sync's is 0): once
     // status().applied reaches it, the delegate's frame shows it.
     int submit(const scene::Scene& scene, const DirtyPrims& changes, const Viewport& viewport);
@@ -76,6 +78,8 @@ private:
     };
     void work();
     void syncAndExecute(Update update);
+    // Inserts the scene's lights the index lacks and removes those the scene lost.
+    void syncLightSet(const scene::Scene& scene);
     std::vector<hd::AovBinding> bindings(const std::vector<std::string>& aovs) const;
 
     hd::RenderDelegate& delegate_;
@@ -83,6 +87,7 @@ private:
     render::AovBuffers buffers_;
     hd::RenderIndex index_;
     std::unique_ptr<hd::RenderPass> pass_;
+    std::set<hd::SdfPath> lights_;  // the lights in the index (the worker's)
 
     mutable std::mutex mutex_;
     std::condition_variable wake_;

@@ -1,0 +1,111 @@
+// The viewer's document without a window: the title's unsaved mark follows the material and
+// light edits, undo and redo (a held slider is one step), and saving; the undo stack itself.
+#include "delegate/render_delegate.h"
+#include "examples/opal-view/core/undo_stack.h"
+#include "examples/opal-view/core/viewer_model.h"
+#include "schema/error.h"
+#include "tests/scene/scene_test_files.h"
+
+#include <gtest/gtest.h>
+
+namespace opal::view {
+namespace {
+
+bool marked(const ViewerModel& model) { return model.title().find(" *") != std::string::npos; }
+
+TEST(UndoStack, UndoesAndRedoesWholeStatesAndAnEditForgetsTheRedos) {
+    UndoStack<int> stack(2);
+    EXPECT_FALSE(stack.undo(0));
+    stack.push(1);
+    stack.push(2);
+    stack.push(3);  // the oldest, 1, goes
+    EXPECT_EQ(stack.undo(4), 3);
+    EXPECT_EQ(stack.undo(3), 2);
+    EXPECT_FALSE(stack.undo(2));
+    EXPECT_EQ(stack.redo(2), 3);
+    stack.push(3);
+    EXPECT_FALSE(stack.canRedo());
+}
+
+class ModelTest : public ::testing::Test {
+protected:
+    test::SceneDir dir;
+    OpalRenderDelegate delegate;
+    ViewerModel model{delegate, 48, 32};
+
+    void SetUp() override { model.open(dir.writeSphereAsset("sphere")); }
+    Rgb absorption() const { return model.selectedMaterial().subsurface.sigmaA; }
+};
+
+TEST_F(ModelTest, TheTitleNamesTheFileAndMarksUnsavedEditsUntilSaved) {
+    EXPECT_NE(model.title().find("sphere.usda"), std::string::npos) << model.title();
+    EXPECT_FALSE(marked(model));
+    const double sigmaA[] = {0.3, 0.1, 0.3};
+    model.setMaterialParameter("sigma_a", sigmaA);
+    EXPECT_TRUE(marked(model)) << model.title();
+    model.undo();
+    EXPECT_FALSE(marked(model)) << "back where it was opened";
+    model.redo();
+    EXPECT_TRUE(marked(model));
+    model.saveScene(dir / "saved.usda");
+    EXPECT_FALSE(marked(model)) << model.title();
+    EXPECT_NE(model.title().find("saved.usda"), std::string::npos) << model.title();
+    model.undo();
+    EXPECT_TRUE(marked(model)) << "undone past the save";
+    model.camera.yaw += 30.0;
+    model.redo();
+    EXPECT_FALSE(marked(model)) << "the camera is not an edit";
+}
+
+TEST_F(ModelTest, EditsMadeWhileMergingAreOneUndoStep) {
+    const Rgb start = absorption();
+    model.setMergingEdits(true);
+    for (const double g : {0.12, 0.14, 0.16}) {
+        const double sigmaA[] = {0.05, g, 0.2};
+        model.setMaterialParameter("sigma_a", sigmaA);
+    }
+    model.setMergingEdits(false);
+    EXPECT_EQ(absorption()[1], double(0.16f)) << "edits hold what a layer's float holds";
+    const double sigmaA[] = {0.05, 0.2, 0.2};
+    model.setMaterialParameter("sigma_a", sigmaA);
+    ASSERT_TRUE(model.undo());
+    EXPECT_EQ(absorption()[1], double(0.16f));
+    ASSERT_TRUE(model.undo());
+    EXPECT_EQ(absorption(), start);
+    EXPECT_FALSE(model.undo());
+}
+
+TEST_F(ModelTest, LightEditsUndoIncludingAddRemoveRenameAndEnable) {
+    const hd::SdfPath added = model.addLight(NewLightKind::Dome);
+    EXPECT_EQ(added, "/_OpalView/Lights/Dome1");
+    const hd::SdfPath renamed = model.renameLight(added, "Sky");
+    model.setLightEnabled(KeyLightPath, false);
+    model.removeLight(renamed);
+    EXPECT_EQ(model.scene().lights.size(), 1u);
+    EXPECT_FALSE(model.lightEnabled(KeyLightPath));
+    model.undo();  // the removal
+    EXPECT_TRUE(model.scene().lights.count("/_OpalView/Lights/Sky"));
+    model.undo();  // disabling
+    EXPECT_TRUE(model.lightEnabled(KeyLightPath));
+    model.undo();  // the rename
+    EXPECT_TRUE(model.scene().lights.count(added));
+    model.undo();  // the addition
+    EXPECT_EQ(model.scene().lights.size(), 1u);
+    EXPECT_FALSE(marked(model));
+    EXPECT_THROW(model.renameLight(KeyLightPath, "a/b"), Error);
+    EXPECT_THROW(model.addLight(NewLightKind::Point, KeyLightPath), Error);
+}
+
+TEST_F(ModelTest, APresetOutsideTheAssetsRangeIsRefusedNamingIt) {
+    try {
+        model.applyPreset("ketchup");
+        FAIL() << "no error";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("preset 'ketchup': "), std::string::npos) << e.what();
+    }
+    EXPECT_THROW(model.applyPreset("jelly"), Error);
+    EXPECT_FALSE(marked(model));
+}
+
+}  // namespace
+}  // namespace opal::view
