@@ -60,6 +60,8 @@ std::optional<hd::Value> control(const hd::RenderSettingDescriptor& setting, con
 
 void drawStatsPanel(const hd::RenderDelegate& delegate, bool& open) {
     if (!open) return;
+    const ImGuiIO& io = ImGui::GetIO();
+    ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - 350.0f, 30.0f), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(340.0f, 360.0f), ImGuiCond_FirstUseEver);
     if (ImGui::Begin("Render stats", &open) && ImGui::BeginTable("##stats", 2, ImGuiTableFlags_RowBg)) {
         for (const auto& [name, value] : delegate.renderStats()) {
@@ -76,6 +78,8 @@ void drawStatsPanel(const hd::RenderDelegate& delegate, bool& open) {
 
 void drawRenderSettingsPanel(hd::RenderDelegate& delegate, bool& open, std::string& problem) {
     if (!open) return;
+    const ImGuiIO& io = ImGui::GetIO();
+    ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - 390.0f, 400.0f), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(380.0f, 0.0f), ImGuiCond_FirstUseEver);
     if (ImGui::Begin("Render settings", &open)) {
         for (const hd::RenderSettingDescriptor& setting : delegate.renderSettingDescriptors()) {

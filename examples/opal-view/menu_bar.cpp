@@ -5,31 +5,54 @@
 namespace opal::view {
 namespace {
 
-constexpr const char* DialogName = "Save as";
+constexpr const char* DialogName = "File";
 
 std::filesystem::path besideDocument(const ViewerModel& model, const char* suffix) {
     std::filesystem::path file = model.file();
     return file.replace_filename(file.stem().string() + suffix);
 }
 
+const char* prompt(FileAction action) {
+    switch (action) {
+    case FileAction::Open: return "A scene layer or a baked asset layer (.usda):";
+    case FileAction::SaveScene: return "The edited scene, as a USDA layer for opal-render:";
+    case FileAction::SavePicture: return "The picture as shown, display-referred (.png):";
+    }
+    return "";
+}
+
 }  // namespace
 
-void MenuBar::ask(SaveKind kind, const std::filesystem::path& suggestion) {
-    asking_ = kind;
+void MenuBar::ask(FileAction action, const std::filesystem::path& suggestion) {
+    asking_ = action;
     openDialog_ = true;
     path_.fill('\0');
     suggestion.string().copy(path_.data(), path_.size() - 1);
 }
 
-std::optional<SaveRequest> MenuBar::draw(ViewerModel& model, PanelVisibility& panels) {
+std::optional<FileRequest> MenuBar::fileMenu(const ViewerModel& model, const std::vector<std::filesystem::path>& recent) {
+    std::optional<FileRequest> request;
+    if (!ImGui::BeginMenu("File")) return request;
+    if (ImGui::MenuItem("Open...")) ask(FileAction::Open, model.file());
+    if (ImGui::BeginMenu("Open recent", !recent.empty())) {
+        for (const std::filesystem::path& file : recent)
+            if (ImGui::MenuItem(file.string().c_str())) request = FileRequest{FileAction::Open, file};
+        ImGui::EndMenu();
+    }
+    ImGui::Separator();
+    if (ImGui::MenuItem("Save scene as...", nullptr, false, model.isOpen()))
+        ask(FileAction::SaveScene, besideDocument(model, ".edited.usda"));
+    if (ImGui::MenuItem("Save picture as PNG...", nullptr, false, model.isOpen()))
+        ask(FileAction::SavePicture, besideDocument(model, ".png"));
+    ImGui::EndMenu();
+    return request;
+}
+
+std::optional<FileRequest> MenuBar::draw(ViewerModel& model, PanelVisibility& panels,
+                                         const std::vector<std::filesystem::path>& recent) {
+    std::optional<FileRequest> request;
     if (ImGui::BeginMainMenuBar()) {
-        if (ImGui::BeginMenu("File")) {
-            if (ImGui::MenuItem("Save scene as...", nullptr, false, model.isOpen()))
-                ask(SaveKind::Scene, besideDocument(model, ".edited.usda"));
-            if (ImGui::MenuItem("Save picture as PNG...", nullptr, false, model.isOpen()))
-                ask(SaveKind::Picture, besideDocument(model, ".png"));
-            ImGui::EndMenu();
-        }
+        request = fileMenu(model, recent);
         if (ImGui::BeginMenu("Edit")) {
             if (ImGui::MenuItem("Undo", "Ctrl+Z")) model.undo();
             if (ImGui::MenuItem("Redo", "Ctrl+Shift+Z")) model.redo();
@@ -45,20 +68,20 @@ std::optional<SaveRequest> MenuBar::draw(ViewerModel& model, PanelVisibility& pa
         if (!status.empty()) ImGui::TextDisabled("  %s", status.c_str());
         ImGui::EndMainMenuBar();
     }
-    return dialog();
+    if (std::optional<FileRequest> confirmed = dialog()) request = std::move(confirmed);
+    return request;
 }
 
-std::optional<SaveRequest> MenuBar::dialog() {
+std::optional<FileRequest> MenuBar::dialog() {
     if (openDialog_) ImGui::OpenPopup(DialogName);
     openDialog_ = false;
     if (!ImGui::BeginPopupModal(DialogName, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return std::nullopt;
-    std::optional<SaveRequest> request;
-    ImGui::TextUnformatted(*asking_ == SaveKind::Scene ? "The edited scene, as a USDA layer for opal-render:"
-                                                       : "The picture as shown, display-referred:");
+    std::optional<FileRequest> request;
+    ImGui::TextUnformatted(prompt(*asking_));
     ImGui::SetNextItemWidth(480.0f);
     const bool entered = ImGui::InputText("##path", path_.data(), path_.size(), ImGuiInputTextFlags_EnterReturnsTrue);
-    if (ImGui::Button("Save") || entered) {
-        request = SaveRequest{*asking_, std::filesystem::path(path_.data())};
+    if (ImGui::Button(*asking_ == FileAction::Open ? "Open" : "Save") || entered) {
+        request = FileRequest{*asking_, std::filesystem::path(path_.data())};
         ImGui::CloseCurrentPopup();
     }
     ImGui::SameLine();

@@ -34,6 +34,9 @@ using Clock = std::chrono::steady_clock;
 constexpr auto RefineInterval = std::chrono::milliseconds(500);
 constexpr float PanelWidth = 300.0f;
 constexpr float HudHeight = 70.0f;  // the heads-up line and a message under it
+// ImGui sizes a window it shows for the first time over its first frames (drawn from the
+// second): a script waits this many before the window counts as showing a panel.
+constexpr int PanelLayoutFrames = 3;
 
 // The config the delegate converts dome textures with (a scene may set opal:ocioConfig,
 // DELEGATE.md), so that the picture is shown in the space the renderer worked in, as
@@ -56,8 +59,10 @@ Viewer::Viewer(const ViewOptions& options, std::vector<ScriptAction> script)
       window_(options.width, options.height, "opal-view"),
       imgui_(window_),
       display_(ColorConfig::fromEnvironment()),
+      recent_(recentFilesPath()),
       model_(*renderer_.delegate, window_.framebufferSize().first, window_.framebufferSize().second),
       converter_(display_.config()) {
+    if (!recent_.warning().empty()) std::cerr << "opal-view: warning: " << recent_.warning() << '\n';
     const bool openScene = opensGivenScene(options, script);
     model_.setRenderedAovs({"color"});
     if (!script.empty()) script_.emplace(std::move(script));
@@ -83,11 +88,17 @@ void Viewer::open(const std::filesystem::path& file) {
     updateTitle();
     requested_ = shown_ = {};
     shownImage_ = {};
+    try {
+        recent_.add(file);
+    } catch (const Error& e) {  // the scene is open: a list that cannot be kept is no reason to fail
+        std::cerr << "opal-view: warning: " << e.what() << '\n';
+    }
     shownApplied_ = 0;
 }
 
 void Viewer::frame() {
     window_.pollEvents();
+    openDropped();
     const Clock::time_point now = Clock::now();
     hud_.frameMs = std::chrono::duration<double, std::milli>(now - lastFrame_).count();
     lastFrame_ = now;
@@ -95,6 +106,7 @@ void Viewer::frame() {
     const auto [width, height] = window_.framebufferSize();
     if (width > 0 && height > 0) model_.setViewport(width, height);
     if (model_.isOpen()) drawInterface();
+    ++framesSincePanels_;
     collectMessages();
     if (script_ && script_->step(*this)) script_.reset();
     updateTitle();
@@ -119,14 +131,30 @@ void Viewer::frame() {
     window_.swapBuffers();
 }
 
-void Viewer::carryOut(const SaveRequest& save) {
+void Viewer::carryOut(const FileRequest& request) {
     try {
-        if (save.kind == SaveKind::Scene) model_.saveScene(save.file);
-        else savePng(save.file);
-        menu_.status = "wrote " + save.file.string();
+        switch (request.action) {
+        case FileAction::Open: open(request.file); break;
+        case FileAction::SaveScene: model_.saveScene(request.file); break;
+        case FileAction::SavePicture: savePng(request.file); break;
+        }
+        menu_.status = (request.action == FileAction::Open ? "opened " : "wrote ") + request.file.string();
     } catch (const std::exception& e) {
         menu_.status = std::string("error: ") + e.what();
         std::cerr << "opal-view: error: " << e.what() << '\n';
+    }
+}
+
+void Viewer::openDropped() {
+    const std::vector<std::filesystem::path> dropped = window_.takeDroppedFiles();
+    if (dropped.empty()) return;
+    if (dropped.size() > 1) std::cerr << "opal-view: warning: " << dropped.size() << " files dropped: opening the first\n";
+    try {
+        open(dropped.front());
+        hud_.message.clear();
+    } catch (const std::exception& e) {
+        hud_.message = "error: " + dropped.front().string() + ": " + e.what();
+        std::cerr << "opal-view: " << hud_.message << '\n';
     }
 }
 
@@ -140,7 +168,7 @@ void Viewer::updateTitle() {
 void Viewer::drawInterface() {
     // A slider held or a light dragged is one undo step, however many frames it lasts.
     model_.setMergingEdits(ImGui::IsAnyItemActive() || ImGui::IsMouseDown(ImGuiMouseButton_Left));
-    if (const std::optional<SaveRequest> save = menu_.draw(model_, panels_)) carryOut(*save);
+    if (const std::optional<FileRequest> request = menu_.draw(model_, panels_, recent_.files())) carryOut(*request);
     handleViewportInput(model_, panels_);
     ImGui::SetNextWindowPos(ImVec2(10.0f, 30.0f), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(PanelWidth, 0.0f), ImGuiCond_FirstUseEver);
@@ -230,7 +258,9 @@ void Viewer::showConverted() {
     }
 }
 
-bool Viewer::pictureSettled() { return model_.settled() && shown_.settled && sameFrame(currentTag(), shown_); }
+bool Viewer::pictureSettled() {
+    return model_.settled() && shown_.settled && sameFrame(currentTag(), shown_) && framesSincePanels_ >= PanelLayoutFrames;
+}
 
 void Viewer::beginMeasure() { measure_.emplace(Clock::now()); }
 
@@ -260,6 +290,17 @@ void Viewer::setAov(const std::string& aov) {
     if (!hd::findAov(aov)) throw Error("unknown AOV '" + aov + "' (AOVs: " + hd::aovNameList() + ")");
     settings_.aov = aov;
     ++settings_.version;
+}
+
+void Viewer::showPanel(const std::string& panel, bool open) {
+    bool* shown = panel == "help"       ? &panels_.help
+                  : panel == "stats"    ? &panels_.stats
+                  : panel == "settings" ? &panels_.settings
+                  : panel == "probe"    ? &panels_.probe
+                                        : nullptr;
+    if (!shown) throw Error("unknown panel '" + panel + "' (panels: help, stats, settings, probe)");
+    *shown = open;
+    framesSincePanels_ = 0;
 }
 
 void Viewer::requestScreenshot(const std::filesystem::path& file) {

@@ -7,6 +7,7 @@
 #include "examples/opal-view/core/display_picture.h"
 #include "examples/opal-view/core/edit_latency.h"
 #include "examples/opal-view/core/picture_converter.h"
+#include "examples/opal-view/core/recent_files.h"
 #include "examples/opal-view/core/renderer_loader.h"
 #include "examples/opal-view/core/script_runner.h"
 #include "examples/opal-view/core/viewer_model.h"
@@ -38,6 +39,7 @@ public:
     void setDisplayView(const std::string& display, const std::string& view) override;
     void setExposure(double stops) override;
     void setAov(const std::string& aov) override;
+    void showPanel(const std::string& panel, bool open) override;
     bool pictureSettled() override;
     std::string takeRenderError() override;
     void requestScreenshot(const std::filesystem::path& file) override;
@@ -56,7 +58,9 @@ private:
     void refreshPicture();
     void showConverted();
     void updateTitle();
-    void carryOut(const SaveRequest& save);
+    void carryOut(const FileRequest& request);
+    // Opens what was dropped on the window (the first file), reporting failures in the HUD.
+    void openDropped();
     // The frame the buffers hold now (passes, syncs, display settings).
     PictureTag currentTag() const;
 
@@ -73,8 +77,10 @@ private:
     std::string shownAov_;  // what it shows
     std::string title_;
     MenuBar menu_;
+    RecentFiles recent_;
     PanelVisibility panels_;
     std::string lightProblem_, settingsProblem_;
+    int framesSincePanels_ = 0;  // interface frames drawn since a script opened or closed a panel
     std::string renderError_;
     PictureTag requested_, shown_;
     int shownApplied_ = 0;                 // the newest submission a shown picture holds

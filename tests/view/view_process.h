@@ -34,16 +34,19 @@ inline std::string shellWord(const std::filesystem::path& path) { return "'" + p
 inline std::string scriptWord(const std::filesystem::path& path) { return "\"" + path.string() + "\""; }
 
 // EXECUTABLE ARGUMENTS, output captured in `dir`.
-inline ViewRun runProgram(const char* executable, const SceneDir& dir, const std::string& arguments) {
-    const std::string command = std::string("'") + executable + "' " + arguments + " > '" +
+// `environment`: assignments put before the command ("NAME=VALUE ").
+inline ViewRun runProgram(const char* executable, const SceneDir& dir, const std::string& arguments,
+                          const std::string& environment = "") {
+    const std::string command = environment + "'" + executable + "' " + arguments + " > '" +
                                 (dir / "view-out.txt").string() + "' 2> '" + (dir / "view-err.txt").string() + "'";
     const int status = std::system(command.c_str());
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurpFile(dir / "view-out.txt"),
             slurpFile(dir / "view-err.txt")};
 }
 
+// Its list of recent files goes to `dir`/config (XDG_CONFIG_HOME), never the user's.
 inline ViewRun runOpalView(const SceneDir& dir, const std::string& arguments) {
-    return runProgram(OPAL_VIEW_EXECUTABLE, dir, arguments);
+    return runProgram(OPAL_VIEW_EXECUTABLE, dir, arguments, "XDG_CONFIG_HOME=" + shellWord(dir / "config") + " ");
 }
 
 inline ViewRun runOpalRender(const SceneDir& dir, const std::string& arguments) {

@@ -43,6 +43,8 @@ constexpr ActionForm Forms[] = {
     {"undo", ActionKind::Undo},
     {"redo", ActionKind::Redo},
     {"setting W W", ActionKind::Setting},
+    {"panel W =on", ActionKind::Panel},
+    {"panel W =off", ActionKind::Panel},
     {"view W W", ActionKind::View},
     {"exposure N", ActionKind::Exposure},
     {"aov W", ActionKind::Aov},

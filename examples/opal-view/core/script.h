@@ -20,6 +20,7 @@
 //   view DISPLAY VIEW                  the OCIO display and view
 //   exposure STOPS                     display exposure
 //   aov NAME                           the AOV shown (hd/aov.h)
+//   panel help|stats|settings|probe on|off   the optional panels (the View menu)
 //   camera frame|reset
 //   camera orbit YAW PITCH             degrees, added to the camera's
 //   wait [SECONDS]                     until the picture converged (default 300 s)
@@ -46,7 +47,7 @@ namespace opal::view {
 
 enum class ActionKind {
     Load, MaterialSet, MaterialReset, MaterialPreset, LightMove, LightSet, LightAdd, LightRemove, LightRename,
-    LightEnable, Undo, Redo, Setting, View, Exposure, Aov, CameraFrame, CameraReset, CameraOrbit, Wait, Drag, Screenshot,
+    LightEnable, Undo, Redo, Setting, Panel, View, Exposure, Aov, CameraFrame, CameraReset, CameraOrbit, Wait, Drag, Screenshot,
     SaveExr, SavePng, SaveUsda, Probe, Quit
 };
 

@@ -23,6 +23,8 @@ public:
     virtual void setDisplayView(const std::string& display, const std::string& view) = 0;
     virtual void setExposure(double stops) = 0;
     virtual void setAov(const std::string& aov) = 0;
+    // Opens or closes an optional panel: help, stats, settings or probe.
+    virtual void showPanel(const std::string& panel, bool open) = 0;
     // The renderer converged on the latest edit and the window shows that picture.
     virtual bool pictureSettled() = 0;
     // The first error the renderer reported since the last call, or "".
