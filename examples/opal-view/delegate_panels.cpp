@@ -76,17 +76,17 @@ void drawStatsPanel(const hd::RenderDelegate& delegate, bool& open) {
     ImGui::End();
 }
 
-void drawRenderSettingsPanel(hd::RenderDelegate& delegate, bool& open, std::string& problem) {
+void drawRenderSettingsPanel(ViewerModel& model, const hd::RenderDelegate& delegate, bool& open, std::string& problem) {
     if (!open) return;
     const ImGuiIO& io = ImGui::GetIO();
     ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - 390.0f, 400.0f), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(380.0f, 0.0f), ImGuiCond_FirstUseEver);
     if (ImGui::Begin("Render settings", &open)) {
         for (const hd::RenderSettingDescriptor& setting : delegate.renderSettingDescriptors()) {
-            const std::optional<hd::Value> changed = control(setting, delegate.renderSetting(setting.key));
+            const std::optional<hd::Value> changed = control(setting, model.renderSetting(setting.key));
             if (!changed) continue;
             try {
-                delegate.setRenderSetting(setting.key, *changed);
+                model.setRenderSetting(setting.key, *changed);
                 problem.clear();
             } catch (const std::exception& e) {
                 problem = e.what();

@@ -182,11 +182,7 @@ void Viewer::drawInterface() {
     ImGui::End();
     drawKeyboardHelp(panels_.help);
     drawStatsPanel(*renderer_.delegate, panels_.stats);
-    if (panels_.settings) {
-        const std::map<hd::Token, hd::Value> before = renderer_.delegate->renderSettings();
-        drawRenderSettingsPanel(*renderer_.delegate, panels_.settings, settingsProblem_);
-        if (renderer_.delegate->renderSettings() != before) model_.settingsChanged();
-    }
+    drawRenderSettingsPanel(model_, *renderer_.delegate, panels_.settings, settingsProblem_);
     if (panels_.probe) drawProbeTooltip(model_, shownImage_, shownAov_);
     drawHud(model_, hud_);
 }

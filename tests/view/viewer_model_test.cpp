@@ -109,3 +109,31 @@ TEST_F(ModelTest, APresetOutsideTheAssetsRangeIsRefusedNamingIt) {
 
 }  // namespace
 }  // namespace opal::view
+
+namespace opal::view {
+namespace {
+
+std::string settingError(ViewerModel& model, const char* key, const char* value) {
+    try {
+        model.setRenderSettingText(key, value);
+    } catch (const Error& e) {
+        return e.what();
+    }
+    return "";
+}
+
+// Checked against the delegate's descriptors before the worker sets them (where a refusal
+// could only be reported later); the value waiting is the one the panel shows.
+TEST_F(ModelTest, RenderSettingsAreCheckedAgainstTheDescriptorsAndWaitForTheWorker) {
+    EXPECT_EQ(settingError(model, "opal:samplesPerPixel", "5000"), "setting opal:samplesPerPixel: 5000 is outside [1, 1024]");
+    EXPECT_EQ(settingError(model, "opal:pixelFilter", "gauss"),
+              "setting opal:pixelFilter: 'gauss' is not one of box, blackmanHarris");
+    EXPECT_EQ(settingError(model, "opal:tileSize", "big"), "setting opal:tileSize: 'big' is not an integer");
+    EXPECT_EQ(settingError(model, "opal:bogus", "1").rfind("the renderer has no setting 'opal:bogus' (settings: ", 0), 0u);
+    model.setRenderSettingText("opal:samplesPerPixel", "4");
+    EXPECT_EQ(model.renderSetting("opal:samplesPerPixel"), hd::Value(4));
+    EXPECT_FALSE(model.settled()) << "a setting waiting for the worker";
+}
+
+}  // namespace
+}  // namespace opal::view

@@ -31,7 +31,7 @@ RenderSession::RenderSession(hd::RenderDelegate& delegate, scene::Scene scene, V
     source_.populate(index_);
     for (const auto& entry : scene.lights) lights_.insert(entry.first);
     pass_ = delegate_.createRenderPass(index_);
-    Update first{std::move(scene), {}, std::move(viewport)};
+    Update first{std::move(scene), {}, std::move(viewport), 0, {}};
     markAll(first.scene, first.dirty);
     pending_ = std::move(first);
     worker_ = std::thread([this] { work(); });
@@ -46,7 +46,8 @@ RenderSession::~RenderSession() {
     worker_.join();
 }
 
-int RenderSession::submit(const scene::Scene& scene, const DirtyPrims& changes, const Viewport& viewport) {
+int RenderSession::submit(const scene::Scene& scene, const DirtyPrims& changes, const Viewport& viewport,
+                          const RenderSettingChanges& settings) {
     int number = 0;
     {
         std::lock_guard lock(mutex_);
@@ -55,6 +56,7 @@ int RenderSession::submit(const scene::Scene& scene, const DirtyPrims& changes, 
         pending_->viewport = viewport;
         pending_->number = number = ++submissions_;
         for (const auto& [path, bits] : changes) pending_->dirty[path] |= bits;
+        pending_->settings.insert(pending_->settings.end(), settings.begin(), settings.end());
     }
     wake_.notify_all();
     return number;
@@ -148,6 +150,7 @@ void RenderSession::syncAndExecute(Update update) {
     const auto start = std::chrono::steady_clock::now();
     std::vector<std::string> messages;
     try {
+        for (const auto& [key, value] : update.settings) delegate_.setRenderSetting(key, value);
         syncLightSet(update.scene);
         source_.setScene(std::move(update.scene));
         const scene::Scene& scene = source_.scene();

@@ -19,6 +19,7 @@
 #include <set>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace opal::view {
@@ -31,6 +32,10 @@ struct Viewport {
     std::vector<std::string> aovs;
     friend bool operator==(const Viewport&, const Viewport&) = default;
 };
+
+// Render settings for the delegate, set on the worker (the thread that syncs and executes,
+// so a setting never changes under a sync) before the next sync.
+using RenderSettingChanges = std::vector<std::pair<hd::Token, hd::Value>>;
 
 struct SessionStatus {
     double lastSyncMs = 0.0;  // the last sync (relighting included), wall clock
@@ -52,7 +57,8 @@ public:
     // Lights may come and go (the index follows); other prims keep their paths.
     // Returns the submission's number (1, 2, ...; the first sync's is 0): once
     // status().applied reaches it, the delegate's frame shows it.
-    int submit(const scene::Scene& scene, const DirtyPrims& changes, const Viewport& viewport);
+    int submit(const scene::Scene& scene, const DirtyPrims& changes, const Viewport& viewport,
+               const RenderSettingChanges& settings = {});
     // Nothing pending or running on the worker, and every bound buffer holds its final values.
     bool settled() const;
     // The newest submission is synced and its frame has finished a pass. A host that submits
@@ -75,6 +81,7 @@ private:
         DirtyPrims dirty;
         Viewport viewport;
         int number = 0;
+        RenderSettingChanges settings;
     };
     void work();
     void syncAndExecute(Update update);

@@ -172,7 +172,7 @@ bool ScriptRunner::run(const ScriptAction& action, ScriptHost& host) {
     case ActionKind::LightEnable: runLightSet(action, model); return true;
     case ActionKind::Undo:
     case ActionKind::Redo: runHistory(action, model); return true;
-    case ActionKind::Setting: model.setRenderSetting(action.words[0], action.words[1]); return true;
+    case ActionKind::Setting: model.setRenderSettingText(action.words[0], action.words[1]); return true;
     case ActionKind::LightMove:
     case ActionKind::LightSet: runLight(action, model); return true;
     case ActionKind::View: host.setDisplayView(action.words[0], action.words[1]); return true;

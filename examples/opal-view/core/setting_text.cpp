@@ -4,6 +4,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <sstream>
 #include <string>
 #include <variant>
 
@@ -37,6 +38,28 @@ hd::Value parseSettingValue(const hd::RenderSettingDescriptor& setting, std::str
     }
     if (std::holds_alternative<std::string>(setting.defaultValue)) return std::string(text);
     return refuse("of a type a script can set");
+}
+
+void checkSettingValue(const hd::RenderSettingDescriptor& setting, const hd::Value& value) {
+    if (value.index() != setting.defaultValue.index())
+        throw Error("setting " + setting.key + ": a value of another type than its default's");
+    double number = 0.0;
+    if (const int* i = std::get_if<int>(&value)) number = *i;
+    if (const double* d = std::get_if<double>(&value)) number = *d;
+    if ((setting.min && number < *setting.min) || (setting.max && number > *setting.max)) {
+        std::ostringstream message;
+        message << "setting " << setting.key << ": " << number << " is outside [" << setting.min.value_or(number) << ", "
+                << setting.max.value_or(number) << "]";
+        throw Error(message.str());
+    }
+    const std::string* text = std::get_if<std::string>(&value);
+    if (!text || setting.choices.empty()) return;
+    std::string choices;
+    for (const std::string& choice : setting.choices) {
+        if (choice == *text) return;
+        choices += (choices.empty() ? "" : ", ") + choice;
+    }
+    throw Error("setting " + setting.key + ": '" + *text + "' is not one of " + choices);
 }
 
 const hd::RenderSettingDescriptor& findSetting(const std::vector<hd::RenderSettingDescriptor>& settings,

@@ -17,17 +17,18 @@ bool sameCamera(const hd::CameraDesc& a, const hd::CameraDesc& b) {
            a.verticalAperture == b.verticalAperture && a.nearClip == b.nearClip && a.farClip == b.farClip;
 }
 
-// The delegate's settings that differ from their defaults: what a saved scene authors.
-std::vector<std::pair<hd::Token, hd::Value>> changedSettings(const hd::RenderDelegate& delegate) {
-    std::vector<std::pair<hd::Token, hd::Value>> changed;
-    for (const hd::RenderSettingDescriptor& setting : delegate.renderSettingDescriptors()) {
-        const hd::Value value = delegate.renderSetting(setting.key);
+}  // namespace
+
+// The settings that differ from their defaults (those waiting for the worker included):
+// what a saved scene authors.
+RenderSettingChanges ViewerModel::changedSettings() const {
+    RenderSettingChanges changed;
+    for (const hd::RenderSettingDescriptor& setting : delegate_.renderSettingDescriptors()) {
+        const hd::Value value = renderSetting(setting.key);
         if (!(value == setting.defaultValue)) changed.emplace_back(setting.key, value);
     }
     return changed;
 }
-
-}  // namespace
 
 ViewerModel::ViewerModel(hd::RenderDelegate& delegate, int width, int height) : delegate_(delegate) {
     viewport_ = {ViewCameraPath, width, height, {}};
@@ -222,7 +223,7 @@ std::string ViewerModel::title() const {
 void ViewerModel::saveScene(const std::filesystem::path& file) {
     if (!isOpen()) throw Error("no scene is open");
     SceneExport out{scene(), edited_->disabledLights(), {}, ViewCameraPath, viewport_.width, viewport_.height,
-                    changedSettings(delegate_)};
+                    changedSettings()};
     out.scene.cameras.at(ViewCameraPath).desc = cameraDesc(camera, bounds_);
     if (!document_->assetOnly) {
         // A material as the file authored it, when the artist left it so (exact for presets
@@ -253,26 +254,37 @@ void ViewerModel::setViewport(int width, int height) {
     viewport_.height = std::max(height, 1);
 }
 
-void ViewerModel::setRenderSetting(std::string_view key, std::string_view value) {
+void ViewerModel::setRenderSetting(std::string_view key, const hd::Value& value) {
     const std::vector<hd::RenderSettingDescriptor> settings = delegate_.renderSettingDescriptors();
     const hd::RenderSettingDescriptor& setting = findSetting(settings, key);
-    delegate_.setRenderSetting(setting.key, parseSettingValue(setting, value));
-    settingsChanged();
+    checkSettingValue(setting, value);
+    pendingSettings_.emplace_back(setting.key, value);
+}
+
+void ViewerModel::setRenderSettingText(std::string_view key, std::string_view value) {
+    const std::vector<hd::RenderSettingDescriptor> settings = delegate_.renderSettingDescriptors();
+    setRenderSetting(key, parseSettingValue(findSetting(settings, key), value));
+}
+
+hd::Value ViewerModel::renderSetting(const hd::Token& key) const {
+    for (auto it = pendingSettings_.rbegin(); it != pendingSettings_.rend(); ++it)
+        if (it->first == key) return it->second;
+    return delegate_.renderSetting(key);
 }
 
 int ViewerModel::update() {
     if (!session_) return 0;
     const hd::CameraDesc desc = cameraDesc(camera, bounds_);
     if (!sameCamera(desc, scene().cameras.at(ViewCameraPath).desc)) edited_->setCamera(ViewCameraPath, desc);
-    if (!edited_->changed() && viewport_ == submitted_ && !settingsChanged_) return 0;
+    if (!edited_->changed() && viewport_ == submitted_ && pendingSettings_.empty()) return 0;
     if (!session_->firstPassDone()) return 0;  // the edits wait, merged, for the next frame
     submitted_ = viewport_;
-    settingsChanged_ = false;
-    return session_->submit(edited_->renderedScene(), edited_->takeChanges(), viewport_);
+    return session_->submit(edited_->renderedScene(), edited_->takeChanges(), viewport_,
+                            std::exchange(pendingSettings_, {}));
 }
 
 bool ViewerModel::settled() const {
-    return session_ && !edited_->changed() && viewport_ == submitted_ && !settingsChanged_ && session_->settled();
+    return session_ && !edited_->changed() && viewport_ == submitted_ && pendingSettings_.empty() && session_->settled();
 }
 
 }  // namespace opal::view

@@ -91,18 +91,20 @@ public:
     // the frame of the last submission finished a pass (RenderSession::firstPassDone).
     // Returns the submission's number (RenderSession::submit), 0 when nothing went.
     int update();
-    // The delegate's render settings changed (the settings panel): the next update() hands
-    // the scene to the session again, which syncs and executes with them.
-    void settingsChanged() { settingsChanged_ = true; }
-    // One setting, its value read as the type of its descriptor's default (setting_text.h);
-    // throws opal::Error for an unknown key, a bad value, or one the delegate refuses.
-    void setRenderSetting(std::string_view key, std::string_view value);
+    // A render setting for the delegate, checked against its descriptor (setting_text.h;
+    // throws opal::Error for an unknown key or a bad value), set by the session's worker
+    // before its next sync; the text form is read as the type of the setting's default.
+    void setRenderSetting(std::string_view key, const hd::Value& value);
+    void setRenderSettingText(std::string_view key, std::string_view value);
+    // The value the delegate has, or the one waiting to be set.
+    hd::Value renderSetting(const hd::Token& key) const;
     RenderSession& session() const { return *session_; }
     // Edits submitted and the session settled (converged on the latest scene).
     bool settled() const;
 
 private:
     OrbitCamera initialCamera() const;
+    RenderSettingChanges changedSettings() const;
     // Before a material or light edit: the state it changes goes on the undo stack.
     void recordUndo();
     void restore(const EditState& state);
@@ -120,7 +122,7 @@ private:
     UndoStack<EditState> undo_;
     bool merging_ = false, gestureOpen_ = false;
     long savedRevision_ = 0;
-    bool settingsChanged_ = false;
+    RenderSettingChanges pendingSettings_;  // for the next submission
     std::unique_ptr<RenderSession> session_;  // last: goes first
 };
 
