@@ -137,3 +137,38 @@ TEST_F(ModelTest, RenderSettingsAreCheckedAgainstTheDescriptorsAndWaitForTheWork
 
 }  // namespace
 }  // namespace opal::view
+
+namespace opal::view {
+namespace {
+
+// A preset inside the asset's range: its coefficients as a layer's floats hold them, the
+// specular layer kept, one undo step.
+TEST(ModelPresets, APresetSetsTheMeasuredCoefficientsAndUndoesInOneStep) {
+    const test::SceneDir dir;
+    auto asset = std::make_shared<TranslucentAsset>(*test::sphereAsset(2, 5.0f, 0));
+    asset->range = EditableRange::coveringPresets();
+    asset->bake.identifier = 0x5e1f0b5e55ed0002ull;
+    writeSidecar(dir / "wide.opal", *asset);
+    writeAssetLayer(dir / "wide.usda", *asset, "./wide.opal");
+    OpalRenderDelegate delegate;
+    ViewerModel model(delegate, 48, 32);
+    model.open(dir / "wide.usda");
+    const hd::MaterialDesc before = model.selectedMaterial();
+    const double rough[] = {0.5};
+    model.setMaterialParameter("roughness", rough);
+    model.applyPreset("skimmilk");
+    const Material milk = *findPreset("skimmilk");
+    const hd::MaterialDesc& now = model.selectedMaterial();
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_EQ(now.subsurface.sigmaSPrime[c], double(float(milk.sigmaSPrime[c])));
+        EXPECT_EQ(now.subsurface.sigmaA[c], double(float(milk.sigmaA[c])));
+    }
+    EXPECT_EQ(now.subsurface.eta, double(float(milk.eta)));
+    EXPECT_EQ(now.specularRoughness, 0.5);
+    ASSERT_TRUE(model.undo());
+    EXPECT_EQ(model.selectedMaterial().specularRoughness, 0.5);
+    EXPECT_EQ(model.selectedMaterial().subsurface.sigmaA[1], before.subsurface.sigmaA[1]);
+}
+
+}  // namespace
+}  // namespace opal::view
