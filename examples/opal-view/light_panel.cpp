@@ -1,8 +1,12 @@
 #include "examples/opal-view/light_panel.h"
 
 #include "examples/opal-view/core/edited_scene.h"
+#include "schema/error.h"
 
 #include <imgui.h>
+
+#include <optional>
+#include <utility>
 
 namespace opal::view {
 namespace {
@@ -17,11 +21,43 @@ const char* kindName(const scene::SceneLight& light) {
     return "light";
 }
 
+void addButtons(ViewerModel& model) {
+    ImGui::TextUnformatted("Add");
+    for (const NewLightKind kind : {NewLightKind::Point, NewLightKind::Distant, NewLightKind::Dome}) {
+        ImGui::SameLine();
+        if (ImGui::SmallButton(newLightKindName(kind))) model.addLight(kind);
+    }
+}
+
+// Each light with its enable box; a disabled light stays listed, unlit.
 void lightList(ViewerModel& model) {
+    std::optional<std::pair<hd::SdfPath, bool>> toggled;
     for (const auto& [path, light] : model.scene().lights) {
+        bool enabled = model.lightEnabled(path);
+        if (ImGui::Checkbox(("##on" + path).c_str(), &enabled)) toggled = {path, enabled};
+        ImGui::SameLine();
         const std::string label = path + "  (" + kindName(light) + ")";
         if (ImGui::Selectable(label.c_str(), model.selectedLight == path)) model.selectedLight = path;
     }
+    if (toggled) model.setLightEnabled(toggled->first, toggled->second);
+}
+
+// Rename and remove the selected light; what the model refuses is shown under them.
+void lightNaming(ViewerModel& model, const hd::SdfPath& path, std::string& problem) {
+    static constexpr std::size_t NameLength = 128;
+    char name[NameLength] = {};
+    const std::string leaf = path.substr(path.find_last_of('/') + 1);
+    leaf.copy(name, NameLength - 1);
+    try {
+        if (ImGui::InputText("name", name, NameLength, ImGuiInputTextFlags_EnterReturnsTrue)) {
+            model.renameLight(path, name);
+            problem.clear();
+        }
+        if (ImGui::Button("Remove light")) model.removeLight(path);
+    } catch (const Error& e) {
+        problem = e.what();
+    }
+    if (!problem.empty()) ImGui::TextWrapped("%s", problem.c_str());
 }
 
 void lightParameters(ViewerModel& model, const hd::SdfPath& path) {
@@ -50,14 +86,18 @@ void lightParameters(ViewerModel& model, const hd::SdfPath& path) {
 
 }  // namespace
 
-void drawLightPanel(ViewerModel& model) {
+void drawLightPanel(ViewerModel& model, std::string& problem) {
     if (!ImGui::CollapsingHeader("Lights", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    addButtons(model);
     if (model.scene().lights.empty()) {
         ImGui::TextDisabled("the scene has no lights");
         return;
     }
     lightList(model);
-    if (model.selectedLight) lightParameters(model, *model.selectedLight);
+    if (!model.selectedLight) return;
+    const hd::SdfPath selected = *model.selectedLight;
+    lightParameters(model, selected);
+    lightNaming(model, selected, problem);
 }
 
 }  // namespace opal::view

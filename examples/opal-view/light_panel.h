@@ -1,12 +1,15 @@
-// The light panel: every light of the scene, the selected one's intensity, exposure and
-// colour, and (for a point or sphere light) its position, which a left-button drag in the
-// viewport changes.
+// The light panel: add a point, distant or dome light; every light of the scene with a box
+// that enables it; the selected one's intensity, exposure and colour, (for a point or sphere
+// light) its position, which a left-button drag in the viewport changes, its name and removal.
 #pragma once
 
 #include "examples/opal-view/core/viewer_model.h"
 
+#include <string>
+
 namespace opal::view {
 
-void drawLightPanel(ViewerModel& model);
+// `problem`: the last refused rename or removal, shown until one succeeds.
+void drawLightPanel(ViewerModel& model, std::string& problem);
 
 }  // namespace opal::view

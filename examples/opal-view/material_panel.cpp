@@ -40,6 +40,20 @@ bool scalarSlider(const char* label, double& value, double lo, double hi, const 
     return true;
 }
 
+// The measured presets; those outside the asset's editable range are shown but disabled.
+void presetPicker(ViewerModel& model) {
+    if (!ImGui::BeginCombo("preset", "choose...")) return;
+    const EditableRange& range = model.selectedAsset().range;
+    for (const NamedMaterial& preset : jensenPresets()) {
+        const std::string name(preset.name);
+        const bool fits = range.contains(preset.material);
+        if (ImGui::Selectable(fits ? name.c_str() : (name + " (outside the asset's range)").c_str(), false,
+                              fits ? 0 : ImGuiSelectableFlags_Disabled))
+            model.applyPreset(name);
+    }
+    ImGui::EndCombo();
+}
+
 }  // namespace
 
 void drawMaterialPanel(ViewerModel& model) {
@@ -53,6 +67,7 @@ void drawMaterialPanel(ViewerModel& model) {
     changed |= scalarSlider("eta", desc.subsurface.eta, range.etaMin, range.etaMax, "%.3f");
     changed |= scalarSlider("roughness", desc.specularRoughness, 0.0, 1.0, "%.3f");
     if (changed) model.setSelectedMaterial(desc);
+    presetPicker(model);
     if (ImGui::Button("Reset to baked default")) model.resetMaterial();
 }
 

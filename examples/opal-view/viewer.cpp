@@ -2,8 +2,13 @@
 
 #include "delegate/hd/aov.h"
 #include "delegate/output/exr_writer.h"
+#include "delegate/output/preview_writer.h"
 #include "examples/opal-view/color_panel.h"
+#include "examples/opal-view/delegate_panels.h"
+#include "examples/opal-view/keyboard_help.h"
+#include "examples/opal-view/probe_tooltip.h"
 #include "examples/opal-view/core/default_scene.h"
+#include "examples/opal-view/core/pixel_probe.h"
 #include "examples/opal-view/light_panel.h"
 #include "examples/opal-view/material_panel.h"
 #include "examples/opal-view/screenshot.h"
@@ -13,6 +18,7 @@
 
 #include <glad/gl.h>
 #include <imgui.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <iostream>
@@ -28,6 +34,9 @@ using Clock = std::chrono::steady_clock;
 constexpr auto RefineInterval = std::chrono::milliseconds(500);
 constexpr float PanelWidth = 300.0f;
 constexpr float HudHeight = 70.0f;  // the heads-up line and a message under it
+// ImGui sizes a window it shows for the first time over its first frames (drawn from the
+// second): a script waits this many before the window counts as showing a panel.
+constexpr int PanelLayoutFrames = 3;
 
 // The config the delegate converts dome textures with (a scene may set opal:ocioConfig,
 // DELEGATE.md), so that the picture is shown in the space the renderer worked in, as
@@ -50,8 +59,10 @@ Viewer::Viewer(const ViewOptions& options, std::vector<ScriptAction> script)
       window_(options.width, options.height, "opal-view"),
       imgui_(window_),
       display_(ColorConfig::fromEnvironment()),
+      recent_(recentFilesPath()),
       model_(*renderer_.delegate, window_.framebufferSize().first, window_.framebufferSize().second),
       converter_(display_.config()) {
+    if (!recent_.warning().empty()) std::cerr << "opal-view: warning: " << recent_.warning() << '\n';
     const bool openScene = opensGivenScene(options, script);
     model_.setRenderedAovs({"color"});
     if (!script.empty()) script_.emplace(std::move(script));
@@ -74,13 +85,20 @@ void Viewer::open(const std::filesystem::path& file) {
         ++settings_.version;
     }
     for (const std::string& warning : model_.takeLoadWarnings()) std::cerr << "opal-view: warning: " << warning << '\n';
-    window_.setTitle("opal-view - " + file.string());
+    updateTitle();
     requested_ = shown_ = {};
+    shownImage_ = {};
+    try {
+        recent_.add(file);
+    } catch (const Error& e) {  // the scene is open: a list that cannot be kept is no reason to fail
+        std::cerr << "opal-view: warning: " << e.what() << '\n';
+    }
     shownApplied_ = 0;
 }
 
 void Viewer::frame() {
     window_.pollEvents();
+    openDropped();
     const Clock::time_point now = Clock::now();
     hud_.frameMs = std::chrono::duration<double, std::milli>(now - lastFrame_).count();
     lastFrame_ = now;
@@ -88,8 +106,10 @@ void Viewer::frame() {
     const auto [width, height] = window_.framebufferSize();
     if (width > 0 && height > 0) model_.setViewport(width, height);
     if (model_.isOpen()) drawInterface();
+    ++framesSincePanels_;
     collectMessages();
     if (script_ && script_->step(*this)) script_.reset();
+    updateTitle();
     // What is shown (color's alpha travels with it), or everything while an EXR waits.
     if (everyAov_) model_.setRenderedAovs({});
     else model_.setRenderedAovs(settings_.aov == "color" ? std::vector<std::string>{"color"}
@@ -111,18 +131,59 @@ void Viewer::frame() {
     window_.swapBuffers();
 }
 
+void Viewer::carryOut(const FileRequest& request) {
+    try {
+        switch (request.action) {
+        case FileAction::Open: open(request.file); break;
+        case FileAction::SaveScene: model_.saveScene(request.file); break;
+        case FileAction::SavePicture: savePng(request.file); break;
+        }
+        menu_.status = (request.action == FileAction::Open ? "opened " : "wrote ") + request.file.string();
+    } catch (const std::exception& e) {
+        menu_.status = std::string("error: ") + e.what();
+        std::cerr << "opal-view: error: " << e.what() << '\n';
+    }
+}
+
+void Viewer::openDropped() {
+    const std::vector<std::filesystem::path> dropped = window_.takeDroppedFiles();
+    if (dropped.empty()) return;
+    if (dropped.size() > 1) std::cerr << "opal-view: warning: " << dropped.size() << " files dropped: opening the first\n";
+    try {
+        open(dropped.front());
+        hud_.message.clear();
+    } catch (const std::exception& e) {
+        hud_.message = "error: " + dropped.front().string() + ": " + e.what();
+        std::cerr << "opal-view: " << hud_.message << '\n';
+    }
+}
+
+void Viewer::updateTitle() {
+    const std::string title = model_.title();
+    if (title == title_) return;
+    title_ = title;
+    window_.setTitle(title);
+}
+
 void Viewer::drawInterface() {
-    handleViewportInput(model_);
-    ImGui::SetNextWindowPos(ImVec2(10.0f, 10.0f), ImGuiCond_FirstUseEver);
+    // A slider held or a light dragged is one undo step, however many frames it lasts.
+    model_.setMergingEdits(ImGui::IsAnyItemActive() || ImGui::IsMouseDown(ImGuiMouseButton_Left));
+    if (const std::optional<FileRequest> request = menu_.draw(model_, panels_, recent_.files())) carryOut(*request);
+    handleViewportInput(model_, panels_);
+    ImGui::SetNextWindowPos(ImVec2(10.0f, 30.0f), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(PanelWidth, 0.0f), ImGuiCond_FirstUseEver);
     // Above the heads-up line, however small the window.
     const float tallest = std::max(ImGui::GetIO().DisplaySize.y - HudHeight, 100.0f);
     ImGui::SetNextWindowSizeConstraints(ImVec2(PanelWidth, 0.0f), ImVec2(PanelWidth, tallest));
     ImGui::Begin("Look");
     drawMaterialPanel(model_);
-    drawLightPanel(model_);
+    drawLightPanel(model_, lightProblem_);
     drawColorPanel(display_, settings_);
     ImGui::End();
+    drawKeyboardHelp(panels_.help);
+    drawStatsPanel(*renderer_.delegate, panels_.stats);
+    drawRenderSettingsPanel(model_, *renderer_.delegate, panels_.settings, settingsProblem_);
+    if (panels_.probe) drawProbeTooltip(model_, shownImage_, shownAov_);
     drawHud(model_, hud_);
 }
 
@@ -181,6 +242,10 @@ void Viewer::showConverted() {
     if (!done) return;
     if (!done->error.empty()) hud_.message = "error: " + done->error;
     else if (!done->image.empty()) picture_.upload(done->image);
+    if (done->error.empty()) {
+        shownImage_ = std::move(done->image);
+        shownAov_ = settings_.aov;
+    }
     shown_ = done->tag;
     // A pass of the frame the newest sync started: the picture shows that edit.
     if (shown_.passes >= 1 && shown_.applied > shownApplied_) {
@@ -189,7 +254,9 @@ void Viewer::showConverted() {
     }
 }
 
-bool Viewer::pictureSettled() { return model_.settled() && shown_.settled && sameFrame(currentTag(), shown_); }
+bool Viewer::pictureSettled() {
+    return model_.settled() && shown_.settled && sameFrame(currentTag(), shown_) && framesSincePanels_ >= PanelLayoutFrames;
+}
 
 void Viewer::beginMeasure() { measure_.emplace(Clock::now()); }
 
@@ -221,6 +288,17 @@ void Viewer::setAov(const std::string& aov) {
     ++settings_.version;
 }
 
+void Viewer::showPanel(const std::string& panel, bool open) {
+    bool* shown = panel == "help"       ? &panels_.help
+                  : panel == "stats"    ? &panels_.stats
+                  : panel == "settings" ? &panels_.settings
+                  : panel == "probe"    ? &panels_.probe
+                                        : nullptr;
+    if (!shown) throw Error("unknown panel '" + panel + "' (panels: help, stats, settings, probe)");
+    *shown = open;
+    framesSincePanels_ = 0;
+}
+
 void Viewer::requestScreenshot(const std::filesystem::path& file) {
     if (file.extension() != ".png") throw Error("screenshot " + file.string() + ": the file must end in .png");
     const std::filesystem::path folder = std::filesystem::absolute(file).parent_path();
@@ -245,6 +323,24 @@ void Viewer::saveExr(const std::filesystem::path& file) {
     for (const std::string& warning : warnings) std::cerr << "opal-view: warning: " << warning << '\n';
     std::cout << "opal-view: wrote " << file.string() << std::endl;
     everyAov_ = false;
+}
+
+void Viewer::savePng(const std::filesystem::path& file) {
+    if (file.extension() != ".png") throw Error("save png " + file.string() + ": the file must end in .png");
+    const Image linear = mappedImage(model_.session().buffer(settings_.aov));
+    if (linear.empty()) throw Error("save png " + file.string() + ": nothing is rendered yet");
+    Image picture;
+    // Isolated: this thread must not pick up the renderer's tiles meanwhile.
+    tbb::this_task_arena::isolate([&] { picture = display_.toFile(linear, settings_.aov, settings_.exposure); });
+    writePreview(file, picture);
+    std::cout << "opal-view: wrote " << file.string() << std::endl;
+}
+
+std::string Viewer::probe(int x, int y) {
+    everyAov_ = false;
+    const PixelProbe probe{x, y, probeAovs(model_.session().buffers(), x, y), shownAov_,
+                           shownValue(shownImage_, x, y, model_.width(), model_.height())};
+    return probeReport(probe);
 }
 
 }  // namespace opal::view

@@ -7,12 +7,15 @@
 #include "examples/opal-view/core/display_picture.h"
 #include "examples/opal-view/core/edit_latency.h"
 #include "examples/opal-view/core/picture_converter.h"
+#include "examples/opal-view/core/recent_files.h"
 #include "examples/opal-view/core/renderer_loader.h"
 #include "examples/opal-view/core/script_runner.h"
 #include "examples/opal-view/core/viewer_model.h"
 #include "examples/opal-view/display_settings.h"
 #include "examples/opal-view/hud.h"
 #include "examples/opal-view/imgui_layer.h"
+#include "examples/opal-view/menu_bar.h"
+#include "examples/opal-view/panel_visibility.h"
 #include "examples/opal-view/picture_texture.h"
 #include "examples/opal-view/view_options.h"
 #include "examples/opal-view/window.h"
@@ -36,11 +39,14 @@ public:
     void setDisplayView(const std::string& display, const std::string& view) override;
     void setExposure(double stops) override;
     void setAov(const std::string& aov) override;
+    void showPanel(const std::string& panel, bool open) override;
     bool pictureSettled() override;
     std::string takeRenderError() override;
     void requestScreenshot(const std::filesystem::path& file) override;
     void renderEveryAov() override;
     void saveExr(const std::filesystem::path& file) override;
+    void savePng(const std::filesystem::path& file) override;
+    std::string probe(int x, int y) override;
     void quit() override { quit_ = true; }
     void beginMeasure() override;
     std::string endMeasure() override;
@@ -51,6 +57,10 @@ private:
     void collectMessages();
     void refreshPicture();
     void showConverted();
+    void updateTitle();
+    void carryOut(const FileRequest& request);
+    // Opens what was dropped on the window (the first file), reporting failures in the HUD.
+    void openDropped();
     // The frame the buffers hold now (passes, syncs, display settings).
     PictureTag currentTag() const;
 
@@ -63,6 +73,14 @@ private:
     std::optional<ScriptRunner> script_;
     std::optional<std::filesystem::path> screenshot_;
     HudFigures hud_;
+    Image shownImage_;      // the display-referred picture on screen (for the probe)
+    std::string shownAov_;  // what it shows
+    std::string title_;
+    MenuBar menu_;
+    RecentFiles recent_;
+    PanelVisibility panels_;
+    std::string lightProblem_, settingsProblem_;
+    int framesSincePanels_ = 0;  // interface frames drawn since a script opened or closed a panel
     std::string renderError_;
     PictureTag requested_, shown_;
     int shownApplied_ = 0;                 // the newest submission a shown picture holds

@@ -35,11 +35,18 @@ void dragSelectedLight(ViewerModel& model, const Pointer& pointer) {
 
 }  // namespace
 
-void handleViewportInput(ViewerModel& model) {
+void handleViewportInput(ViewerModel& model, PanelVisibility& panels) {
     const ImGuiIO& io = ImGui::GetIO();
-    if (!io.WantCaptureKeyboard) {
+    // Undo and redo whatever has the keyboard, except a text field (which has its own).
+    if (io.KeyCtrl && !io.WantTextInput) {
+        if (ImGui::IsKeyPressed(GLFW_KEY_Z, true)) io.KeyShift ? model.redo() : model.undo();
+        if (ImGui::IsKeyPressed(GLFW_KEY_Y, true)) model.redo();
+    }
+    if (!io.WantCaptureKeyboard && !io.KeyCtrl) {
         if (ImGui::IsKeyPressed(GLFW_KEY_F, false)) model.frameAll();
         if (ImGui::IsKeyPressed(GLFW_KEY_R, false)) model.resetCamera();
+        if (ImGui::IsKeyPressed(GLFW_KEY_H, false)) panels.help = !panels.help;
+        if (ImGui::IsKeyPressed(GLFW_KEY_P, false)) panels.probe = !panels.probe;
     }
     if (io.WantCaptureMouse || io.DisplaySize.x <= 0.0f || io.DisplaySize.y <= 0.0f) return;
     const Pointer pointer = pointerOf(io);

@@ -1,12 +1,14 @@
 // Mouse and keys over the picture (not over a panel): the pointer gestures of
 // pointer_gestures.h on the camera and the selected point, sphere or spot light; F frames
-// all, R resets the camera.
+// all, R resets the camera; Ctrl+Z undoes, Ctrl+Shift+Z (or Ctrl+Y) redoes; H shows the
+// keyboard help, P the pixel probe.
 #pragma once
 
 #include "examples/opal-view/core/viewer_model.h"
+#include "examples/opal-view/panel_visibility.h"
 
 namespace opal::view {
 
-void handleViewportInput(ViewerModel& model);
+void handleViewportInput(ViewerModel& model, PanelVisibility& panels);
 
 }  // namespace opal::view

@@ -30,6 +30,8 @@ Window::Window(int width, int height, const std::string& title) {
     }
     glfwMakeContextCurrent(window_);
     glfwSwapInterval(1);
+    glfwSetWindowUserPointer(window_, this);
+    glfwSetDropCallback(window_, &Window::onDrop);
     if (!gladLoadGL(glfwGetProcAddress)) {
         glfwDestroyWindow(window_);
         glfwTerminate();
@@ -57,5 +59,16 @@ std::pair<int, int> Window::framebufferSize() const {
 void Window::swapBuffers() { glfwSwapBuffers(window_); }
 
 void Window::pollEvents() { glfwPollEvents(); }
+
+void Window::onDrop(GLFWwindow* window, int count, const char** paths) {
+    auto* self = static_cast<Window*>(glfwGetWindowUserPointer(window));
+    for (int i = 0; i < count; ++i) self->dropped_.emplace_back(paths[i]);
+}
+
+std::vector<std::filesystem::path> Window::takeDroppedFiles() {
+    std::vector<std::filesystem::path> dropped;
+    dropped.swap(dropped_);
+    return dropped;
+}
 
 }  // namespace opal::view

@@ -3,8 +3,10 @@
 // size, is what the picture is rendered at.
 #pragma once
 
+#include <filesystem>
 #include <string>
 #include <utility>
+#include <vector>
 
 struct GLFWwindow;
 
@@ -26,9 +28,14 @@ public:
     std::pair<int, int> framebufferSize() const;
     void swapBuffers();
     void pollEvents();
+    // Files dropped on the window since the last call, in the order dropped.
+    std::vector<std::filesystem::path> takeDroppedFiles();
 
 private:
+    static void onDrop(GLFWwindow* window, int count, const char** paths);
+
     GLFWwindow* window_ = nullptr;
+    std::vector<std::filesystem::path> dropped_;
 };
 
 }  // namespace opal::view

@@ -90,3 +90,49 @@ TEST(Script, AnUnreadableFileIsNamed) {
 
 }  // namespace
 }  // namespace opal::view
+
+namespace opal::view {
+namespace {
+
+TEST(Script, ParsesTheLightHistorySettingSaveAndProbeActions) {
+    const std::vector<ScriptAction> actions = parseScript(R"(material preset marble
+light add point
+light add dome /World/Sky
+light remove /World/Sky
+light rename /World/Key Rim
+light disable /World/Key
+light enable /World/Key
+undo
+redo
+setting opal:reference true
+save png out.png
+save usda "my scene.usda"
+probe 12 34
+)", "look.script");
+    ASSERT_EQ(actions.size(), 13u);
+    EXPECT_EQ(actions[0].kind, ActionKind::MaterialPreset);
+    EXPECT_EQ(actions[0].words, std::vector<std::string>{"marble"});
+    EXPECT_EQ(actions[1].kind, ActionKind::LightAdd);
+    EXPECT_EQ(actions[1].words, std::vector<std::string>{"point"});
+    EXPECT_EQ(actions[2].words, (std::vector<std::string>{"dome", "/World/Sky"}));
+    EXPECT_EQ(actions[3].kind, ActionKind::LightRemove);
+    EXPECT_EQ(actions[4].kind, ActionKind::LightRename);
+    EXPECT_EQ(actions[4].words, (std::vector<std::string>{"/World/Key", "Rim"}));
+    EXPECT_EQ(actions[5].kind, ActionKind::LightEnable);
+    EXPECT_EQ(actions[5].words, (std::vector<std::string>{"disable", "/World/Key"}));
+    EXPECT_EQ(actions[6].words, (std::vector<std::string>{"enable", "/World/Key"}));
+    EXPECT_EQ(actions[7].kind, ActionKind::Undo);
+    EXPECT_EQ(actions[8].kind, ActionKind::Redo);
+    EXPECT_EQ(actions[9].kind, ActionKind::Setting);
+    EXPECT_EQ(actions[9].words, (std::vector<std::string>{"opal:reference", "true"}));
+    EXPECT_EQ(actions[10].kind, ActionKind::SavePng);
+    EXPECT_EQ(actions[11].kind, ActionKind::SaveUsda);
+    EXPECT_EQ(actions[11].words, std::vector<std::string>{"my scene.usda"});
+    EXPECT_EQ(actions[12].kind, ActionKind::Probe);
+    EXPECT_EQ(actions[12].numbers, (std::vector<double>{12.0, 34.0}));
+    EXPECT_EQ(errorOf("light add spot\n").rfind("look.script:1: bad arguments for 'light'", 0), 0u);
+    EXPECT_EQ(errorOf("save tiff out.tif\n").rfind("look.script:1: bad arguments for 'save'", 0), 0u);
+}
+
+}  // namespace
+}  // namespace opal::view

@@ -29,13 +29,28 @@ inline std::string slurpFile(const std::filesystem::path& file) {
     return text.str();
 }
 
-// opal-view ARGUMENTS, output captured in `dir`.
-inline ViewRun runOpalView(const SceneDir& dir, const std::string& arguments) {
-    const std::string command = std::string("'") + OPAL_VIEW_EXECUTABLE + "' " + arguments + " > '" +
+// A path as one word of a shell command line, and of an opal-view script.
+inline std::string shellWord(const std::filesystem::path& path) { return "'" + path.string() + "'"; }
+inline std::string scriptWord(const std::filesystem::path& path) { return "\"" + path.string() + "\""; }
+
+// EXECUTABLE ARGUMENTS, output captured in `dir`.
+// `environment`: assignments put before the command ("NAME=VALUE ").
+inline ViewRun runProgram(const char* executable, const SceneDir& dir, const std::string& arguments,
+                          const std::string& environment = "") {
+    const std::string command = environment + "'" + executable + "' " + arguments + " > '" +
                                 (dir / "view-out.txt").string() + "' 2> '" + (dir / "view-err.txt").string() + "'";
     const int status = std::system(command.c_str());
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurpFile(dir / "view-out.txt"),
             slurpFile(dir / "view-err.txt")};
+}
+
+// Its list of recent files goes to `dir`/config (XDG_CONFIG_HOME), never the user's.
+inline ViewRun runOpalView(const SceneDir& dir, const std::string& arguments) {
+    return runProgram(OPAL_VIEW_EXECUTABLE, dir, arguments, "XDG_CONFIG_HOME=" + shellWord(dir / "config") + " ");
+}
+
+inline ViewRun runOpalRender(const SceneDir& dir, const std::string& arguments) {
+    return runProgram(OPAL_RENDER_EXECUTABLE, dir, arguments);
 }
 
 // An image as float channels, with the channel names the file gives.

@@ -79,4 +79,15 @@ Image DisplayPicture::toDisplay(const Image& sceneLinear, const std::string& aov
     return rgb;
 }
 
+Image DisplayPicture::toFile(const Image& sceneLinear, const std::string& aov, double exposure) const {
+    if (aov != "color" || sceneLinear.channels() != 4) return toDisplay(sceneLinear, aov, exposure);
+    Image rgba = sceneLinear;
+    const float gain = float(std::exp2(exposure));
+    for (int y = 0; y < rgba.height(); ++y)
+        for (int x = 0; x < rgba.width(); ++x)
+            for (int c = 0; c < 3; ++c) rgba.at(x, y, c) *= gain;
+    transform_.applyInPlace(rgba);
+    return rgba;
+}
+
 }  // namespace opal::view

@@ -31,6 +31,9 @@ public:
 
     // `aov` names what `sceneLinear` holds (hd/aov.h). Returns an RGB image.
     Image toDisplay(const Image& sceneLinear, const std::string& aov, double exposure) const;
+    // What a saved PNG holds: toDisplay's picture, except that the color AOV keeps its
+    // alpha (RGBA through the view, as opal-render's --preview), so it composites.
+    Image toFile(const Image& sceneLinear, const std::string& aov, double exposure) const;
 
 private:
     ColorConfig config_;

@@ -1,9 +1,13 @@
 #include "examples/opal-view/core/edited_scene.h"
 
+#include "examples/opal-view/core/prim_path.h"
 #include "schema/error.h"
 
 namespace opal::view {
 namespace {
+
+constexpr hd::DirtyBits LightBits = hd::Dirty::Params | hd::Dirty::Transform;
+constexpr hd::DirtyBits MaterialBits = hd::Dirty::Params | hd::Dirty::Material;
 
 template <class Prim>
 Prim& find(std::map<hd::SdfPath, Prim>& prims, const hd::SdfPath& path, const char* what) {
@@ -17,16 +21,41 @@ Prim& find(std::map<hd::SdfPath, Prim>& prims, const hd::SdfPath& path, const ch
     return it->second;
 }
 
+bool sameRgb(const Rgb& a, const Rgb& b) { return a[0] == b[0] && a[1] == b[1] && a[2] == b[2]; }
+
 }  // namespace
+
+bool sameMaterial(const hd::MaterialDesc& a, const hd::MaterialDesc& b) {
+    return sameRgb(a.subsurface.sigmaSPrime, b.subsurface.sigmaSPrime) && sameRgb(a.subsurface.sigmaA, b.subsurface.sigmaA) &&
+           a.subsurface.eta == b.subsurface.eta && a.specular == b.specular && a.specularRoughness == b.specularRoughness;
+}
+
+bool sameLight(const hd::LightDesc& a, const hd::LightDesc& b) {
+    return a.kind == b.kind && a.transform == b.transform && sameRgb(a.color, b.color) && a.intensity == b.intensity &&
+           a.exposure == b.exposure && a.normalize == b.normalize && a.radius == b.radius &&
+           a.treatAsPoint == b.treatAsPoint && a.shapingConeAngle == b.shapingConeAngle &&
+           a.shapingConeSoftness == b.shapingConeSoftness && a.angle == b.angle && a.textureFile == b.textureFile &&
+           a.textureColorSpace == b.textureColorSpace && a.visibleToCamera == b.visibleToCamera &&
+           a.shadowField == b.shadowField && a.flicker.amplitude == b.flicker.amplitude &&
+           a.flicker.frequency == b.flicker.frequency && a.flicker.seed == b.flicker.seed && a.time == b.time;
+}
+
+scene::Scene EditedScene::renderedScene() const {
+    scene::Scene rendered = scene_;
+    for (const hd::SdfPath& path : disabled_) rendered.lights.erase(path);
+    return rendered;
+}
 
 void EditedScene::setMaterial(const hd::SdfPath& path, const hd::MaterialDesc& desc) {
     find(scene_.materials, path, "material").desc = desc;
-    dirty_[path] |= hd::Dirty::Params | hd::Dirty::Material;
+    dirty_[path] |= MaterialBits;
+    edited();
 }
 
 void EditedScene::setLight(const hd::SdfPath& path, const hd::LightDesc& desc) {
     find(scene_.lights, path, "light").desc = desc;
-    dirty_[path] |= hd::Dirty::Params | hd::Dirty::Transform;
+    dirty_[path] |= LightBits;
+    edited();
 }
 
 void EditedScene::setCamera(const hd::SdfPath& path, const hd::CameraDesc& desc) {
@@ -34,9 +63,69 @@ void EditedScene::setCamera(const hd::SdfPath& path, const hd::CameraDesc& desc)
     dirty_[path] |= hd::Dirty::Params | hd::Dirty::Transform;
 }
 
+void EditedScene::addLight(const hd::SdfPath& path, scene::SceneLight light) {
+    requireNewPrimPath(scene_, path);
+    scene_.lights[path] = std::move(light);
+    dirty_[path] |= hd::Dirty::AllDirty;
+    lightsChanged();
+}
+
+void EditedScene::removeLight(const hd::SdfPath& path) {
+    find(scene_.lights, path, "light");
+    scene_.lights.erase(path);
+    disabled_.erase(path);
+    dirty_.erase(path);
+    lightsChanged();
+}
+
+void EditedScene::renameLight(const hd::SdfPath& from, const hd::SdfPath& to) {
+    scene::SceneLight light = find(scene_.lights, from, "light");
+    requireNewPrimPath(scene_, to);
+    const bool disabled = disabled_.count(from) > 0;
+    removeLight(from);
+    addLight(to, std::move(light));
+    if (disabled) disabled_.insert(to);
+}
+
+void EditedScene::setLightEnabled(const hd::SdfPath& path, bool enabled) {
+    find(scene_.lights, path, "light");
+    if (enabled == !disabled_.count(path)) return;
+    if (enabled) {
+        disabled_.erase(path);
+        dirty_[path] |= hd::Dirty::AllDirty;  // inserted again
+    } else {
+        disabled_.insert(path);
+        dirty_.erase(path);
+    }
+    lightsChanged();
+}
+
+EditState EditedScene::state() const { return {scene_.materials, scene_.lights, disabled_, revision_}; }
+
+void EditedScene::restore(const EditState& state) {
+    for (const auto& [path, material] : state.materials) {
+        const auto now = scene_.materials.find(path);
+        if (now != scene_.materials.end() && !sameMaterial(now->second.desc, material.desc)) dirty_[path] |= MaterialBits;
+    }
+    for (const auto& [path, light] : state.lights) {
+        const auto now = scene_.lights.find(path);
+        const bool enabledBefore = now != scene_.lights.end() && !disabled_.count(path);
+        if (!enabledBefore) dirty_[path] |= hd::Dirty::AllDirty;  // inserted (again)
+        else if (!sameLight(now->second.desc, light.desc)) dirty_[path] |= LightBits;
+    }
+    scene_.materials = state.materials;
+    scene_.lights = state.lights;
+    disabled_ = state.disabledLights;
+    for (auto it = dirty_.begin(); it != dirty_.end();)
+        it = scene_.lights.count(it->first) && disabled_.count(it->first) ? dirty_.erase(it) : std::next(it);
+    revision_ = state.revision;
+    lightsChanged_ = true;
+}
+
 DirtyPrims EditedScene::takeChanges() {
     DirtyPrims changes;
     changes.swap(dirty_);
+    lightsChanged_ = false;
     return changes;
 }
 

@@ -1,5 +1,7 @@
 #include "examples/opal-view/core/orbit_camera.h"
 
+#include "examples/opal-view/core/layer_precision.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -55,7 +57,7 @@ hd::CameraDesc cameraDesc(const OrbitCamera& camera, const BoundingSphere& scene
     const double reach = (eyePosition(camera) - scene.center).length() + scene.radius;
     desc.nearClip = reach * 1e-4;
     desc.farClip = reach * 2.0;
-    return desc;
+    return storable(desc);
 }
 
 void tumble(OrbitCamera& camera, double dxPixels, double dyPixels) {

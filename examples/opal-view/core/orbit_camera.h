@@ -31,7 +31,8 @@ Imath::V2d visibleFilm(const OrbitCamera& camera, double aspect);
 Imath::M44d cameraToWorld(const OrbitCamera& camera);
 Imath::V3d eyePosition(const OrbitCamera& camera);
 // A UsdGeomCamera with the camera's film (the delegate fits it into the viewport), with
-// clipping planes that hold the whole sphere `scene` from wherever the camera is.
+// clipping planes that hold the whole sphere `scene` from wherever the camera is, its
+// values as a layer stores them (layer_precision.h).
 hd::CameraDesc cameraDesc(const OrbitCamera& camera, const BoundingSphere& scene);
 // Half the smaller field of view, radians, for a viewport of this aspect (width / height).
 double halfFieldOfView(const OrbitCamera& camera, double aspect);

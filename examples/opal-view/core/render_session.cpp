@@ -19,13 +19,19 @@ void markAll(const scene::Scene& scene, DirtyPrims& dirty) {
     mark(scene.meshes);
 }
 
+// A prim the session's index holds (a light removed since its edit is not).
+bool inScene(const scene::Scene& scene, const hd::SdfPath& path) {
+    return scene.lights.count(path) || scene.materials.count(path) || scene.meshes.count(path) || scene.cameras.count(path);
+}
+
 }  // namespace
 
 RenderSession::RenderSession(hd::RenderDelegate& delegate, scene::Scene scene, Viewport viewport)
     : delegate_(delegate), source_(scene), buffers_({}, true), index_(delegate) {
     source_.populate(index_);
+    for (const auto& entry : scene.lights) lights_.insert(entry.first);
     pass_ = delegate_.createRenderPass(index_);
-    Update first{std::move(scene), {}, std::move(viewport)};
+    Update first{std::move(scene), {}, std::move(viewport), 0, {}};
     markAll(first.scene, first.dirty);
     pending_ = std::move(first);
     worker_ = std::thread([this] { work(); });
@@ -40,7 +46,8 @@ RenderSession::~RenderSession() {
     worker_.join();
 }
 
-int RenderSession::submit(const scene::Scene& scene, const DirtyPrims& changes, const Viewport& viewport) {
+int RenderSession::submit(const scene::Scene& scene, const DirtyPrims& changes, const Viewport& viewport,
+                          const RenderSettingChanges& settings) {
     int number = 0;
     {
         std::lock_guard lock(mutex_);
@@ -49,6 +56,7 @@ int RenderSession::submit(const scene::Scene& scene, const DirtyPrims& changes, 
         pending_->viewport = viewport;
         pending_->number = number = ++submissions_;
         for (const auto& [path, bits] : changes) pending_->dirty[path] |= bits;
+        pending_->settings.insert(pending_->settings.end(), settings.begin(), settings.end());
     }
     wake_.notify_all();
     return number;
@@ -121,13 +129,33 @@ void RenderSession::work() {
     }
 }
 
+void RenderSession::syncLightSet(const scene::Scene& scene) {
+    for (auto it = lights_.begin(); it != lights_.end();) {
+        if (scene.lights.count(*it)) {
+            ++it;
+            continue;
+        }
+        index_.removePrim(*it);
+        it = lights_.erase(it);
+    }
+    for (const auto& [path, light] : scene.lights) {
+        if (lights_.count(path)) continue;
+        index_.insertSprim(light.primType, source_, path);
+        lights_.insert(path);
+    }
+}
+
 void RenderSession::syncAndExecute(Update update) {
     const int number = update.number;
     const auto start = std::chrono::steady_clock::now();
     std::vector<std::string> messages;
     try {
+        for (const auto& [key, value] : update.settings) delegate_.setRenderSetting(key, value);
+        syncLightSet(update.scene);
         source_.setScene(std::move(update.scene));
-        for (const auto& [path, bits] : update.dirty) index_.changeTracker().markDirty(path, bits);
+        const scene::Scene& scene = source_.scene();
+        for (const auto& [path, bits] : update.dirty)
+            if (inScene(scene, path)) index_.changeTracker().markDirty(path, bits);
         index_.sync();
         hd::RenderPassState state{update.viewport.camera, update.viewport.width, update.viewport.height};
         pass_->execute(state, bindings(update.viewport.aovs));

@@ -16,8 +16,10 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <set>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace opal::view {
@@ -30,6 +32,10 @@ struct Viewport {
     std::vector<std::string> aovs;
     friend bool operator==(const Viewport&, const Viewport&) = default;
 };
+
+// Render settings for the delegate, set on the worker (the thread that syncs and executes,
+// so a setting never changes under a sync) before the next sync.
+using RenderSettingChanges = std::vector<std::pair<hd::Token, hd::Value>>;
 
 struct SessionStatus {
     double lastSyncMs = 0.0;  // the last sync (relighting included), wall clock
@@ -48,9 +54,11 @@ public:
     RenderSession& operator=(const RenderSession&) = delete;
 
     // The interface's scene after its edits, the prims they dirtied, and the viewport.
+    // Lights may come and go (the index follows); other prims keep their paths.
     // Returns the submission's number (1, 2, ...; the first sync's is 0): once
     // status().applied reaches it, the delegate's frame shows it.
-    int submit(const scene::Scene& scene, const DirtyPrims& changes, const Viewport& viewport);
+    int submit(const scene::Scene& scene, const DirtyPrims& changes, const Viewport& viewport,
+               const RenderSettingChanges& settings = {});
     // Nothing pending or running on the worker, and every bound buffer holds its final values.
     bool settled() const;
     // The newest submission is synced and its frame has finished a pass. A host that submits
@@ -73,9 +81,12 @@ private:
         DirtyPrims dirty;
         Viewport viewport;
         int number = 0;
+        RenderSettingChanges settings;
     };
     void work();
     void syncAndExecute(Update update);
+    // Inserts the scene's lights the index lacks and removes those the scene lost.
+    void syncLightSet(const scene::Scene& scene);
     std::vector<hd::AovBinding> bindings(const std::vector<std::string>& aovs) const;
 
     hd::RenderDelegate& delegate_;
@@ -83,6 +94,7 @@ private:
     render::AovBuffers buffers_;
     hd::RenderIndex index_;
     std::unique_ptr<hd::RenderPass> pass_;
+    std::set<hd::SdfPath> lights_;  // the lights in the index (the worker's)
 
     mutable std::mutex mutex_;
     std::condition_variable wake_;

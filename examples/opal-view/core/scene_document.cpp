@@ -1,5 +1,6 @@
 #include "examples/opal-view/core/scene_document.h"
 
+#include "examples/opal-view/core/new_light.h"
 #include "examples/opal-view/core/scene_bounds.h"
 #include "examples/scene/render_setup.h"
 #include "examples/scene/scene_reader.h"
@@ -12,21 +13,6 @@
 namespace opal::view {
 namespace {
 
-// The key light of a staged asset: a point light above, left of and in front of the
-// bounding sphere, three radii away, bright enough that a white diffuse surface facing
-// it would be lit with irradiance pi (radiance about 1).
-scene::SceneLight keyLight(const BoundingSphere& bounds) {
-    const Imath::V3d direction = Imath::V3d(-1.0, 1.2, 1.5).normalized();
-    const double distance = 3.0 * bounds.radius;
-    hd::LightDesc desc;
-    desc.kind = hd::LightKind::Sphere;
-    desc.treatAsPoint = true;
-    desc.radius = 0.0;
-    desc.intensity = distance * distance;
-    desc.transform.setTranslation(bounds.center + direction * distance);
-    return {hd::PrimType::SphereLight, desc, {}};
-}
-
 scene::Scene stagedAsset(const std::filesystem::path& file, scene::AssetCache& assets) {
     scene::Scene scene;
     scene.file = file;
@@ -35,7 +21,7 @@ scene::Scene stagedAsset(const std::filesystem::path& file, scene::AssetCache& a
     scene.metersPerUnit = 0.001 / mesh.asset->unitsPerMm;
     scene.meshes["/" + mesh.asset->name] = {mesh, file, {}};
     for (const std::string& warning : assets.takeWarnings()) scene.warnings.push_back(warning);
-    scene.lights[KeyLightPath] = keyLight(sceneBounds(scene));
+    scene.lights[KeyLightPath] = newLight(NewLightKind::Point, sceneBounds(scene));
     return scene;
 }
 

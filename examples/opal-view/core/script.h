@@ -6,12 +6,21 @@
 //   material set sigma_s|sigma_a R G B the selected mesh's material, mm^-1 per channel
 //   material set eta|roughness V
 //   material reset                     back to the asset's baked default
+//   material preset NAME               a measured material (marble, skin1, ...), eta included
 //   light move PATH X Y Z              a light's position in world space
 //   light set PATH intensity|exposure V
 //   light set PATH color R G B
+//   light add point|distant|dome [PATH]  a new light (default: under /_OpalView/Lights), selected
+//   light remove PATH
+//   light rename PATH NAME             a new last element of its path
+//   light enable|disable PATH          a disabled light stays in the scene, unlit
+//   undo | redo                        material and light edits
+//   setting KEY VALUE                  a render setting of the delegate (opal:reference true,
+//                                      opal:samplesPerPixel 4, ...), typed by its descriptor
 //   view DISPLAY VIEW                  the OCIO display and view
 //   exposure STOPS                     display exposure
 //   aov NAME                           the AOV shown (hd/aov.h)
+//   panel help|stats|settings|probe on|off   the optional panels (the View menu)
 //   camera frame|reset
 //   camera orbit YAW PITCH             degrees, added to the camera's
 //   wait [SECONDS]                     until the picture converged (default 300 s)
@@ -21,6 +30,12 @@
 //   drag light PATH SECONDS            the same, circling the light about the object (4 s a turn)
 //   screenshot OUT.png                 the window's pixels, interface included
 //   save exr OUT.exr                   every AOV, scene-linear (waits for convergence)
+//   save png OUT.png                   the AOV shown, display-referred, the color AOV with its
+//                                      alpha (waits for convergence)
+//   save usda OUT.usda                 the edited scene through the current camera at the
+//                                      window's size, for opal-render (usda_export.h)
+//   probe X Y                          prints every AOV's scene-linear value at pixel (X, Y)
+//                                      (from the top left) and the shown display value
 //   quit
 #pragma once
 
@@ -31,8 +46,9 @@
 namespace opal::view {
 
 enum class ActionKind {
-    Load, MaterialSet, MaterialReset, LightMove, LightSet, View, Exposure, Aov,
-    CameraFrame, CameraReset, CameraOrbit, Wait, Drag, Screenshot, SaveExr, Quit
+    Load, MaterialSet, MaterialReset, MaterialPreset, LightMove, LightSet, LightAdd, LightRemove, LightRename,
+    LightEnable, Undo, Redo, Setting, Panel, View, Exposure, Aov, CameraFrame, CameraReset, CameraOrbit, Wait, Drag, Screenshot,
+    SaveExr, SavePng, SaveUsda, Probe, Quit
 };
 
 struct ScriptAction {

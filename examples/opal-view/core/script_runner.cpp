@@ -15,7 +15,34 @@ constexpr double DefaultWaitSeconds = 300.0;
 
 void runMaterial(const ScriptAction& action, ViewerModel& model) {
     if (action.kind == ActionKind::MaterialReset) return model.resetMaterial();
+    if (action.kind == ActionKind::MaterialPreset) return model.applyPreset(action.words.at(0));
     model.setMaterialParameter(action.words.at(0), action.numbers);
+}
+
+void say(const std::string& line) {
+    std::printf("opal-view: %s\n", line.c_str());
+    std::fflush(stdout);
+}
+
+// Adding, removing, renaming, enabling: what changes which lights there are.
+void runLightSet(const ScriptAction& action, ViewerModel& model) {
+    switch (action.kind) {
+    case ActionKind::LightAdd: {
+        std::optional<hd::SdfPath> path;
+        if (action.words.size() > 1) path = action.words[1];
+        say("added light " + model.addLight(newLightKind(action.words[0]).value(), path));
+        return;
+    }
+    case ActionKind::LightRemove: return model.removeLight(action.words.at(0));
+    case ActionKind::LightRename: say("renamed light to " + model.renameLight(action.words.at(0), action.words.at(1))); return;
+    case ActionKind::LightEnable: return model.setLightEnabled(action.words.at(1), action.words[0] == "enable");
+    default: return;
+    }
+}
+
+void runHistory(const ScriptAction& action, ViewerModel& model) {
+    const bool undo = action.kind == ActionKind::Undo;
+    if (!(undo ? model.undo() : model.redo())) throw Error(undo ? "nothing to undo" : "nothing to redo");
 }
 
 void runLight(const ScriptAction& action, ViewerModel& model) {
@@ -57,7 +84,25 @@ void dragLight(ViewerModel& model, const hd::SdfPath& path, const Imath::V3d& ho
     model.moveLight(path, center + offset);
 }
 
+std::string actionName(const ScriptAction& action) {
+    switch (action.kind) {
+    case ActionKind::Wait: return "wait";
+    case ActionKind::Drag: return "drag";
+    case ActionKind::SavePng: return "save png";
+    case ActionKind::Probe: return "probe";
+    default: return "save exr";
+    }
+}
+
 }  // namespace
+
+template <class F>
+bool ScriptRunner::withEveryAov(const ScriptAction& action, ScriptHost& host, F&& then) {
+    if (!waiting_) host.renderEveryAov();
+    if (!waitForPicture(action, host, DefaultWaitSeconds)) return false;
+    then();
+    return true;
+}
 
 bool ScriptRunner::drag(const ScriptAction& action, ScriptHost& host) {
     using Clock = std::chrono::steady_clock;
@@ -110,8 +155,7 @@ bool ScriptRunner::waitForPicture(const ScriptAction& action, ScriptHost& host, 
     }
     const double waited = std::chrono::duration<double>(std::chrono::steady_clock::now() - waitStart_).count();
     if (waited > seconds)
-        throw Error(std::string(action.kind == ActionKind::Wait ? "wait" : action.kind == ActionKind::Drag ? "drag" : "save exr") +
-                    ": the picture did not converge within " + std::to_string(int(seconds)) + " s");
+        throw Error(actionName(action) + ": the picture did not converge within " + std::to_string(int(seconds)) + " s");
     return false;
 }
 
@@ -120,12 +164,21 @@ bool ScriptRunner::run(const ScriptAction& action, ScriptHost& host) {
     switch (action.kind) {
     case ActionKind::Load: host.open(action.words[0]); return true;
     case ActionKind::MaterialSet:
-    case ActionKind::MaterialReset: runMaterial(action, model); return true;
+    case ActionKind::MaterialReset:
+    case ActionKind::MaterialPreset: runMaterial(action, model); return true;
+    case ActionKind::LightAdd:
+    case ActionKind::LightRemove:
+    case ActionKind::LightRename:
+    case ActionKind::LightEnable: runLightSet(action, model); return true;
+    case ActionKind::Undo:
+    case ActionKind::Redo: runHistory(action, model); return true;
+    case ActionKind::Setting: model.setRenderSettingText(action.words[0], action.words[1]); return true;
     case ActionKind::LightMove:
     case ActionKind::LightSet: runLight(action, model); return true;
     case ActionKind::View: host.setDisplayView(action.words[0], action.words[1]); return true;
     case ActionKind::Exposure: host.setExposure(action.numbers[0]); return true;
     case ActionKind::Aov: host.setAov(action.words[0]); return true;
+    case ActionKind::Panel: host.showPanel(action.words[0], action.words[1] == "on"); return true;
     case ActionKind::CameraFrame:
     case ActionKind::CameraReset:
     case ActionKind::CameraOrbit: runCamera(action, model); return true;
@@ -133,11 +186,22 @@ bool ScriptRunner::run(const ScriptAction& action, ScriptHost& host) {
         return waitForPicture(action, host, action.numbers.empty() ? DefaultWaitSeconds : action.numbers[0]);
     case ActionKind::Drag: return drag(action, host);
     case ActionKind::Screenshot: host.requestScreenshot(action.words[0]); return true;
-    case ActionKind::SaveExr:
-        if (!waiting_) host.renderEveryAov();
+    case ActionKind::SaveExr: return withEveryAov(action, host, [&] { host.saveExr(action.words[0]); });
+    case ActionKind::SavePng:
         if (!waitForPicture(action, host, DefaultWaitSeconds)) return false;
-        host.saveExr(action.words[0]);
+        host.savePng(action.words[0]);
         return true;
+    case ActionKind::SaveUsda:
+        model.saveScene(action.words[0]);
+        say("wrote " + action.words[0]);
+        return true;
+    case ActionKind::Probe:
+        if (action.numbers[0] != std::floor(action.numbers[0]) || action.numbers[1] != std::floor(action.numbers[1]))
+            throw Error("probe: X and Y are whole pixels");
+        return withEveryAov(action, host, [&] {
+            std::printf("%s", host.probe(int(action.numbers[0]), int(action.numbers[1])).c_str());
+            std::fflush(stdout);
+        });
     case ActionKind::Quit: host.quit(); return true;
     }
     return true;

@@ -23,6 +23,8 @@ public:
     virtual void setDisplayView(const std::string& display, const std::string& view) = 0;
     virtual void setExposure(double stops) = 0;
     virtual void setAov(const std::string& aov) = 0;
+    // Opens or closes an optional panel: help, stats, settings or probe.
+    virtual void showPanel(const std::string& panel, bool open) = 0;
     // The renderer converged on the latest edit and the window shows that picture.
     virtual bool pictureSettled() = 0;
     // The first error the renderer reported since the last call, or "".
@@ -32,6 +34,11 @@ public:
     // The renderer writes every AOV until the next saveExr (which needs them all).
     virtual void renderEveryAov() = 0;
     virtual void saveExr(const std::filesystem::path& file) = 0;
+    // The AOV shown, display-referred, at the renderer's resolution (DisplayPicture::toFile).
+    virtual void savePng(const std::filesystem::path& file) = 0;
+    // Every AOV's values at pixel (x, y) from the top left and the shown display value,
+    // one line each (pixel_probe.h); needs every AOV rendered (renderEveryAov).
+    virtual std::string probe(int x, int y) = 0;
     // Starts measuring what the interface shows (edit_latency.h); end returns the summary.
     virtual void beginMeasure() = 0;
     virtual std::string endMeasure() = 0;
@@ -50,6 +57,9 @@ private:
     // Whether the action is done (false: call again next frame).
     bool run(const ScriptAction& action, ScriptHost& host);
     bool waitForPicture(const ScriptAction& action, ScriptHost& host, double seconds);
+    // Waits for every AOV to converge, then does `then`.
+    template <class F>
+    bool withEveryAov(const ScriptAction& action, ScriptHost& host, F&& then);
     bool drag(const ScriptAction& action, ScriptHost& host);
 
     std::vector<ScriptAction> actions_;

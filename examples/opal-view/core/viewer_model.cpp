@@ -1,7 +1,12 @@
 #include "examples/opal-view/core/viewer_model.h"
 
+#include "examples/opal-view/core/layer_precision.h"
 #include "examples/opal-view/core/material_edit.h"
+#include "examples/opal-view/core/prim_path.h"
+#include "examples/opal-view/core/setting_text.h"
+#include "examples/opal-view/core/usda_export.h"
 #include "examples/scene/render_settings_prim.h"
+#include "examples/scene/scene_material.h"
 #include "schema/error.h"
 
 namespace opal::view {
@@ -13,6 +18,17 @@ bool sameCamera(const hd::CameraDesc& a, const hd::CameraDesc& b) {
 }
 
 }  // namespace
+
+// The settings that differ from their defaults (those waiting for the worker included):
+// what a saved scene authors.
+RenderSettingChanges ViewerModel::changedSettings() const {
+    RenderSettingChanges changed;
+    for (const hd::RenderSettingDescriptor& setting : delegate_.renderSettingDescriptors()) {
+        const hd::Value value = renderSetting(setting.key);
+        if (!(value == setting.defaultValue)) changed.emplace_back(setting.key, value);
+    }
+    return changed;
+}
 
 ViewerModel::ViewerModel(hd::RenderDelegate& delegate, int width, int height) : delegate_(delegate) {
     viewport_ = {ViewCameraPath, width, height, {}};
@@ -37,6 +53,9 @@ void ViewerModel::open(const std::filesystem::path& file) {
     scene::Scene scene = document_->scene;
     scene.cameras[ViewCameraPath] = {cameraDesc(camera, bounds_), {}};
     edited_.emplace(scene);
+    undo_.clear();
+    merging_ = gestureOpen_ = false;
+    savedRevision_ = edited_->revision();
     session_ = std::make_unique<RenderSession>(delegate_, std::move(scene), viewport_);
     submitted_ = viewport_;
 }
@@ -69,13 +88,34 @@ const hd::MaterialDesc& ViewerModel::selectedMaterial() const {
     return scene().materials.at(selectedMaterialPath()).desc;
 }
 
-void ViewerModel::setSelectedMaterial(const hd::MaterialDesc& desc) { edited_->setMaterial(selectedMaterialPath(), desc); }
+void ViewerModel::setSelectedMaterial(const hd::MaterialDesc& desc) {
+    recordUndo();
+    edited_->setMaterial(selectedMaterialPath(), storable(desc));
+}
 
 void ViewerModel::setMaterialParameter(std::string_view parameter, std::span<const double> values) {
     setSelectedMaterial(withParameter(selectedMaterial(), parameter, values, selectedAsset()));
 }
 
 void ViewerModel::resetMaterial() { setSelectedMaterial(bakedDefault(selectedAsset())); }
+
+void ViewerModel::applyPreset(std::string_view name) {
+    const std::optional<Material> preset = findPreset(name);
+    if (!preset) throw Error("unknown material preset '" + std::string(name) + "' (presets: " + scene::presetNames() + ")");
+    hd::MaterialDesc desc = selectedMaterial();
+    const TranslucentAsset& asset = selectedAsset();
+    try {
+        const double sigmaS[] = {preset->sigmaSPrime[0], preset->sigmaSPrime[1], preset->sigmaSPrime[2]};
+        const double sigmaA[] = {preset->sigmaA[0], preset->sigmaA[1], preset->sigmaA[2]};
+        desc = withParameter(desc, "sigma_s", sigmaS, asset);
+        desc = withParameter(desc, "sigma_a", sigmaA, asset);
+        const double eta[] = {preset->eta};
+        desc = withParameter(desc, "eta", eta, asset);
+    } catch (const Error& e) {
+        throw Error("preset '" + std::string(name) + "': " + e.what());
+    }
+    setSelectedMaterial(desc);
+}
 
 const hd::LightDesc& ViewerModel::light(const hd::SdfPath& path) const {
     const auto it = scene().lights.find(path);
@@ -87,7 +127,119 @@ const hd::LightDesc& ViewerModel::light(const hd::SdfPath& path) const {
     return it->second.desc;
 }
 
-void ViewerModel::setLight(const hd::SdfPath& path, const hd::LightDesc& desc) { edited_->setLight(path, desc); }
+void ViewerModel::setLight(const hd::SdfPath& path, const hd::LightDesc& desc) {
+    light(path);  // throws for an unknown light before anything is recorded
+    recordUndo();
+    edited_->setLight(path, storable(desc));
+}
+
+hd::SdfPath ViewerModel::addLight(NewLightKind kind, const std::optional<hd::SdfPath>& path) {
+    hd::SdfPath where;
+    if (path) {
+        requireNewPrimPath(scene(), *path);
+        where = *path;
+    } else {
+        std::string name = newLightKindName(kind);
+        name[0] = char(name[0] - 'a' + 'A');
+        for (int n = 1; where.empty() || scene().lights.count(where); ++n)
+            where = ViewerRoot + "/Lights/" + name + std::to_string(n);
+    }
+    recordUndo();
+    edited_->addLight(where, newLight(kind, bounds_));
+    selectedLight = where;
+    return where;
+}
+
+void ViewerModel::removeLight(const hd::SdfPath& path) {
+    light(path);
+    recordUndo();
+    edited_->removeLight(path);
+    if (selectedLight == path) selectedLight.reset();
+}
+
+hd::SdfPath ViewerModel::renameLight(const hd::SdfPath& path, std::string_view name) {
+    light(path);
+    if (!isIdentifier(name))
+        throw Error("'" + std::string(name) + "' is not a prim name (a letter or _ followed by letters, digits or _)");
+    const hd::SdfPath to = siblingPath(path, name);
+    if (to == path) return path;
+    requireNewPrimPath(scene(), to);
+    recordUndo();
+    edited_->renameLight(path, to);
+    if (selectedLight == path) selectedLight = to;
+    return to;
+}
+
+void ViewerModel::setLightEnabled(const hd::SdfPath& path, bool enabled) {
+    if (lightEnabled(path) == enabled) return;
+    recordUndo();
+    edited_->setLightEnabled(path, enabled);
+}
+
+bool ViewerModel::lightEnabled(const hd::SdfPath& path) const {
+    light(path);
+    return !edited_->disabledLights().count(path);
+}
+
+void ViewerModel::recordUndo() {
+    if (gestureOpen_) return;
+    undo_.push(edited_->state());
+    gestureOpen_ = merging_;
+}
+
+void ViewerModel::setMergingEdits(bool merging) {
+    merging_ = merging;
+    if (!merging) gestureOpen_ = false;
+}
+
+void ViewerModel::restore(const EditState& state) {
+    edited_->restore(state);
+    if (selectedLight && !scene().lights.count(*selectedLight)) selectedLight.reset();
+    gestureOpen_ = false;
+}
+
+bool ViewerModel::undo() {
+    if (!edited_) return false;
+    std::optional<EditState> state = undo_.undo(edited_->state());
+    if (state) restore(*state);
+    return state.has_value();
+}
+
+bool ViewerModel::redo() {
+    if (!edited_) return false;
+    std::optional<EditState> state = undo_.redo(edited_->state());
+    if (state) restore(*state);
+    return state.has_value();
+}
+
+bool ViewerModel::unsaved() const { return edited_ && edited_->revision() != savedRevision_; }
+
+std::string ViewerModel::title() const {
+    if (!isOpen()) return "opal-view";
+    return "opal-view - " + file_.filename().string() + (unsaved() ? " *" : "") + " (" +
+           std::filesystem::absolute(file_).parent_path().lexically_normal().string() + ")";
+}
+
+void ViewerModel::saveScene(const std::filesystem::path& file) {
+    if (!isOpen()) throw Error("no scene is open");
+    SceneExport out{scene(), edited_->disabledLights(), {}, ViewCameraPath, viewport_.width, viewport_.height,
+                    changedSettings()};
+    out.scene.cameras.at(ViewCameraPath).desc = cameraDesc(camera, bounds_);
+    if (!document_->assetOnly) {
+        // A material as the file authored it, when the artist left it so (exact for presets
+        // and artist parameters, which floats would round).
+        for (auto& [path, prim] : authoredMaterialPrims(document_->scene.file)) {
+            const auto original = document_->scene.materials.find(path);
+            const auto now = scene().materials.find(path);
+            if (original != document_->scene.materials.end() && now != scene().materials.end() &&
+                sameMaterial(original->second.desc, now->second.desc))
+                out.authoredMaterials.emplace(path, std::move(prim));
+        }
+    }
+    saveSceneLayer(out, file);
+    file_ = file;
+    savedRevision_ = edited_->revision();
+}
 
 void ViewerModel::moveLight(const hd::SdfPath& path, const Imath::V3d& position) {
     setLight(path, movedLight(light(path), position));
@@ -102,16 +254,37 @@ void ViewerModel::setViewport(int width, int height) {
     viewport_.height = std::max(height, 1);
 }
 
+void ViewerModel::setRenderSetting(std::string_view key, const hd::Value& value) {
+    const std::vector<hd::RenderSettingDescriptor> settings = delegate_.renderSettingDescriptors();
+    const hd::RenderSettingDescriptor& setting = findSetting(settings, key);
+    checkSettingValue(setting, value);
+    pendingSettings_.emplace_back(setting.key, value);
+}
+
+void ViewerModel::setRenderSettingText(std::string_view key, std::string_view value) {
+    const std::vector<hd::RenderSettingDescriptor> settings = delegate_.renderSettingDescriptors();
+    setRenderSetting(key, parseSettingValue(findSetting(settings, key), value));
+}
+
+hd::Value ViewerModel::renderSetting(const hd::Token& key) const {
+    for (auto it = pendingSettings_.rbegin(); it != pendingSettings_.rend(); ++it)
+        if (it->first == key) return it->second;
+    return delegate_.renderSetting(key);
+}
+
 int ViewerModel::update() {
     if (!session_) return 0;
     const hd::CameraDesc desc = cameraDesc(camera, bounds_);
     if (!sameCamera(desc, scene().cameras.at(ViewCameraPath).desc)) edited_->setCamera(ViewCameraPath, desc);
-    if (!edited_->changed() && viewport_ == submitted_) return 0;
+    if (!edited_->changed() && viewport_ == submitted_ && pendingSettings_.empty()) return 0;
     if (!session_->firstPassDone()) return 0;  // the edits wait, merged, for the next frame
     submitted_ = viewport_;
-    return session_->submit(scene(), edited_->takeChanges(), viewport_);
+    return session_->submit(edited_->renderedScene(), edited_->takeChanges(), viewport_,
+                            std::exchange(pendingSettings_, {}));
 }
 
-bool ViewerModel::settled() const { return session_ && !edited_->changed() && viewport_ == submitted_ && session_->settled(); }
+bool ViewerModel::settled() const {
+    return session_ && !edited_->changed() && viewport_ == submitted_ && pendingSettings_.empty() && session_->settled();
+}
 
 }  // namespace opal::view

@@ -5,9 +5,11 @@
 #pragma once
 
 #include "examples/opal-view/core/edited_scene.h"
+#include "examples/opal-view/core/new_light.h"
 #include "examples/opal-view/core/orbit_camera.h"
 #include "examples/opal-view/core/render_session.h"
 #include "examples/opal-view/core/scene_document.h"
+#include "examples/opal-view/core/undo_stack.h"
 
 #include <filesystem>
 #include <memory>
@@ -42,12 +44,38 @@ public:
     // material_edit.h's withParameter on the selected material; throws opal::Error.
     void setMaterialParameter(std::string_view parameter, std::span<const double> values);
     void resetMaterial();
+    // One of schema/scatter's presets (sigma_s', sigma_a, eta), the specular layer kept;
+    // throws opal::Error for an unknown name or one outside the asset's editable range.
+    void applyPreset(std::string_view name);
 
     // Throws opal::Error naming the path for a light the scene does not have.
     const hd::LightDesc& light(const hd::SdfPath& path) const;
     void setLight(const hd::SdfPath& path, const hd::LightDesc& desc);
     void moveLight(const hd::SdfPath& path, const Imath::V3d& position);
     std::optional<hd::SdfPath> selectedLight;  // the light the viewport drags
+    // Adds a light at `path` (a new prim path), or under </_OpalView/Lights> with a name of
+    // its kind; selects it and returns its path. Throws opal::Error for a bad path.
+    hd::SdfPath addLight(NewLightKind kind, const std::optional<hd::SdfPath>& path = std::nullopt);
+    void removeLight(const hd::SdfPath& path);
+    // A new last element for the light's path; returns the new path (selected if it was).
+    hd::SdfPath renameLight(const hd::SdfPath& path, std::string_view name);
+    void setLightEnabled(const hd::SdfPath& path, bool enabled);
+    bool lightEnabled(const hd::SdfPath& path) const;
+    const std::set<hd::SdfPath>& disabledLights() const { return edited_->disabledLights(); }
+
+    // Material and light edits, undone and redone as a whole (the camera is not an edit).
+    // While merging (a slider or the light held by the mouse), the edits from the first on
+    // are one step.
+    void setMergingEdits(bool merging);
+    bool undo();  // false when there is nothing to undo
+    bool redo();
+    // Material or light edits since the document was opened or last saved.
+    bool unsaved() const;
+    // The window title: the file's name, " *" while unsaved, and its folder.
+    std::string title() const;
+    // The edited scene as a layer (usda_export.h) through the current camera at the viewport's
+    // size with the delegate's settings that differ from their defaults; no longer unsaved.
+    void saveScene(const std::filesystem::path& file);
 
     OrbitCamera camera;
     void frameAll();
@@ -63,12 +91,23 @@ public:
     // the frame of the last submission finished a pass (RenderSession::firstPassDone).
     // Returns the submission's number (RenderSession::submit), 0 when nothing went.
     int update();
+    // A render setting for the delegate, checked against its descriptor (setting_text.h;
+    // throws opal::Error for an unknown key or a bad value), set by the session's worker
+    // before its next sync; the text form is read as the type of the setting's default.
+    void setRenderSetting(std::string_view key, const hd::Value& value);
+    void setRenderSettingText(std::string_view key, std::string_view value);
+    // The value the delegate has, or the one waiting to be set.
+    hd::Value renderSetting(const hd::Token& key) const;
     RenderSession& session() const { return *session_; }
     // Edits submitted and the session settled (converged on the latest scene).
     bool settled() const;
 
 private:
     OrbitCamera initialCamera() const;
+    RenderSettingChanges changedSettings() const;
+    // Before a material or light edit: the state it changes goes on the undo stack.
+    void recordUndo();
+    void restore(const EditState& state);
 
     hd::RenderDelegate& delegate_;
     scene::AssetCache assets_;
@@ -80,6 +119,10 @@ private:
     Viewport viewport_, submitted_;
     OrbitCamera home_;
     std::vector<std::string> loadWarnings_;
+    UndoStack<EditState> undo_;
+    bool merging_ = false, gestureOpen_ = false;
+    long savedRevision_ = 0;
+    RenderSettingChanges pendingSettings_;  // for the next submission
     std::unique_ptr<RenderSession> session_;  // last: goes first
 };
 

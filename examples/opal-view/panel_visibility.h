@@ -1,0 +1,13 @@
+// Which of the viewer's optional panels are open (the View menu and the H and P keys).
+#pragma once
+
+namespace opal::view {
+
+struct PanelVisibility {
+    bool help = false;      // the keyboard help overlay (H)
+    bool stats = false;     // the delegate's render stats
+    bool settings = false;  // the render settings, from the delegate's descriptors
+    bool probe = false;     // the pixel probe under the cursor (P)
+};
+
+}  // namespace opal::view
