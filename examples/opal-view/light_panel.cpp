@@ -1,5 +1,6 @@
 #include "examples/opal-view/light_panel.h"
 
+#include "examples/opal-view/core/color_temperature.h"
 #include "examples/opal-view/core/edited_scene.h"
 #include "schema/error.h"
 
@@ -60,6 +61,23 @@ void lightNaming(ViewerModel& model, const hd::SdfPath& path, std::string& probl
     if (!problem.empty()) ImGui::TextWrapped("%s", problem.c_str());
 }
 
+// UsdLux's colour temperature: a checkbox, and the kelvin on a logarithmic slider.
+bool colorTemperature(hd::LightDesc& light) {
+    bool on = light.enableColorTemperature, changed = false;
+    float kelvin = float(light.colorTemperature);
+    if (ImGui::Checkbox("colour temperature", &on)) {
+        setColorTemperature(light, on ? light.colorTemperature : 0.0);
+        changed = true;
+    }
+    if (!on) return changed;
+    if (ImGui::SliderFloat("kelvin", &kelvin, float(kMinColorTemperature), float(kMaxColorTemperature), "%.0f K",
+                           ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp)) {
+        setColorTemperature(light, kelvin);
+        changed = true;
+    }
+    return changed;
+}
+
 void lightParameters(ViewerModel& model, const hd::SdfPath& path) {
     hd::LightDesc light = model.light(path);
     bool changed = false;
@@ -77,6 +95,7 @@ void lightParameters(ViewerModel& model, const hd::SdfPath& path) {
         light.color = Rgb{std::max(color[0], 0.0f), std::max(color[1], 0.0f), std::max(color[2], 0.0f)};
         changed = true;
     }
+    changed |= colorTemperature(light);
     if (changed) model.setLight(path, light);
     if (light.kind != hd::LightKind::Sphere) return;
     const Imath::V3d p = lightPosition(light);

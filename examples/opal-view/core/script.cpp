@@ -30,6 +30,8 @@ constexpr ActionForm Forms[] = {
     {"light set W =intensity N", ActionKind::LightSet},
     {"light set W =exposure N", ActionKind::LightSet},
     {"light set W =color N N N", ActionKind::LightSet},
+    {"light set W =temperature N", ActionKind::LightSet},
+    {"light set W =temperature =off", ActionKind::LightSet},
     {"light add =point", ActionKind::LightAdd},
     {"light add =distant", ActionKind::LightAdd},
     {"light add =dome", ActionKind::LightAdd},

@@ -10,6 +10,8 @@
 //   light move PATH X Y Z              a light's position in world space
 //   light set PATH intensity|exposure V
 //   light set PATH color R G B
+//   light set PATH temperature K|off   UsdLux colour temperature (kelvin, 500 to 40000) times
+//                                      the color, or off
 //   light add point|distant|dome [PATH]  a new light (default: under /_OpalView/Lights), selected
 //   light remove PATH
 //   light rename PATH NAME             a new last element of its path

@@ -1,5 +1,6 @@
 #include "examples/opal-view/core/script_runner.h"
 
+#include "examples/opal-view/core/color_temperature.h"
 #include "examples/opal-view/core/edited_scene.h"
 #include "schema/error.h"
 
@@ -54,6 +55,7 @@ void runLight(const ScriptAction& action, ViewerModel& model) {
     if (parameter == "intensity") light.intensity = action.numbers[0];
     if (parameter == "exposure") light.exposure = action.numbers[0];
     if (parameter == "color") light.color = Rgb{action.numbers[0], action.numbers[1], action.numbers[2]};
+    if (parameter == "temperature") setColorTemperature(light, action.numbers.empty() ? 0.0 : action.numbers[0]);
     model.setLight(path, light);
 }
 

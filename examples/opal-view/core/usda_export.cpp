@@ -162,6 +162,10 @@ void writeLight(usda::Layer& layer, const PathMap& map, const hd::SdfPath& path,
     addFloat(prim, "inputs:exposure", light.exposure);
     prim.addAttribute("inputs:color", Value::make<types::Color3f>(color(light.color)));
     prim.addAttribute("inputs:normalize", Value::make<types::Bool>(light.normalize));
+    if (light.enableColorTemperature) {
+        prim.addAttribute("inputs:enableColorTemperature", Value::make<types::Bool>(true));
+        addFloat(prim, "inputs:colorTemperature", light.colorTemperature);
+    }
     writeLightKind(prim, light, target);
     // The reader leaves an invisible light out of the render: a disabled light stays in the
     // layer, switched off.
