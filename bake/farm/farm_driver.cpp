@@ -4,6 +4,8 @@
 #include "bake/farm/farm_task_runner.h"
 #include "schema/error.h"
 
+#include <algorithm>
+
 namespace opal {
 
 FarmFolder setUpFarmFolder(const FarmSpec& spec) {
@@ -29,6 +31,7 @@ LocalFarmResult runLocalFarm(const FarmFolder& folder, std::FILE* progress) {
     LocalFarmResult result;
     for (FarmStage stage : kFarmStages) {
         const std::uint32_t count = taskCount(stage, spec.shards);
+        result.stagePeakRss.emplace_back(stage, 0);
         for (std::uint32_t i = 0; i < count; ++i) {
             if (progress)
                 std::fprintf(progress, "opal-bake: farm local: %s %u/%u\n", std::string(stageName(stage)).c_str(),
@@ -37,6 +40,7 @@ LocalFarmResult runLocalFarm(const FarmFolder& folder, std::FILE* progress) {
             if (!run.ok) throw Error(run.error);
             ++result.tasks;
             if (run.attempts > 1) ++result.retried;
+            result.stagePeakRss.back().second = std::max(result.stagePeakRss.back().second, run.peakRssBytes);
             if (run.peakRssBytes > result.largestTaskRss) {
                 result.largestTaskRss = run.peakRssBytes;
                 result.largestTask = taskName(stage, i);

@@ -8,6 +8,8 @@
 #include <cstdint>
 #include <cstdio>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace opal {
 
@@ -20,6 +22,7 @@ struct LocalFarmResult {
     std::uint32_t tasks = 0, retried = 0;
     std::uint64_t largestTaskRss = 0;
     std::string largestTask;  // "rows 2"
+    std::vector<std::pair<FarmStage, std::uint64_t>> stagePeakRss;  // the largest task's, per stage
 };
 
 // Runs every task of the folder's bake on this machine, stage after stage, each as its

@@ -189,13 +189,18 @@ int waitForFarm(const FarmFolder& folder, const std::filesystem::path& layer, st
             return 1;
         }
         const Progress p = progressOf(folder, shards);
+        if (!std::filesystem::exists(folder.path(), error)) continue;  // removed while counting: the merge is done
         const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
         std::ostringstream line;
         line << "opal-bake: farm: " << p.done << "/" << p.total << " tasks done";
         if (!p.current.empty()) line << " (" << p.current << ")";
-        if (p.done > doneAtStart)
-            line << ", ETA " << int(elapsed * double(p.total - p.done) / double(p.done - doneAtStart) + 0.5) << " s";
-        if (progress && line.str() != shown) std::fprintf(progress, "%s\n", (shown = line.str()).c_str());
+        if (progress && line.str() != shown) {  // a line when a task is done, with the ETA then
+            shown = line.str();
+            if (p.done > doneAtStart)
+                line << ", ETA " << int(elapsed * double(p.total - p.done) / double(p.done - doneAtStart) + 0.5)
+                     << " s";
+            std::fprintf(progress, "%s\n", line.str().c_str());
+        }
         // Jobs all gone from the queue, yet neither the asset nor a failure: cancelled, or
         // killed by Slurm (time limit, memory) before the runner could record it.
         goneChecks = queuedStates(jobs).empty() ? goneChecks + 1 : 0;

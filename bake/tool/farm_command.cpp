@@ -139,6 +139,14 @@ int FarmCommand::bake(const BakeOptions& options, const std::string& stem, bool 
                          "wrote %s\n",
                          result.tasks, result.retried, double(result.largestTaskRss) / (1024.0 * 1024.0),
                          result.largestTask.c_str(), asset.layer().c_str());
+        if (!quiet) {
+            std::string stages;
+            for (const auto& [stage, rss] : result.stagePeakRss)
+                stages += (stages.empty() ? "" : ", ") + std::string(stageName(stage)) + " " +
+                          std::to_string((rss + (1 << 19)) >> 20);
+            std::fprintf(stderr, "opal-bake: farm local: peak RSS of the largest task per stage (MiB): %s\n",
+                         stages.c_str());
+        }
         return 0;
     }
     refuseIfRunning(FarmFolder::forStem(std::filesystem::absolute(stem)));
