@@ -1,10 +1,10 @@
 // A farm bake's stages, in order, and the folder its tasks share (STEM.farm/):
 //   prepare  1 task   import .. basis (bake_pipeline.h prepareBake)  -> prepared.task
 //   rows     N tasks  step 1 for a range of output rows              -> rows-I.task
-//                     (one section per column block and k)
+//                     (one section per k and column block)
 //   columns  N tasks  a block of columns gathered from every rows     -> columns-I.task
-//                     shard, step 2's energy histogram over them      (histogram, then
-//                                                                      the columns per k)
+//                     shard, step 2's energy histogram over them      (the columns per k,
+//                                                                      then the histogram)
 //   keep     N tasks  the threshold from all histograms; the block's  -> kept-I.task
 //                     kept 9/7 coefficients
 //   merge    1 task   the matrices assembled block by block, environment visibility,

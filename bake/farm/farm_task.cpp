@@ -40,7 +40,7 @@ void passCrashPoints(FarmStage stage, std::uint32_t index) {
     crashPoint(point + ":attempt-" + (attempt ? attempt : "1"));
 }
 
-// rows-I.task: section c * K + k holds T_k's entries of rows shard I in column block c,
+// rows-I.task: section k * N + c holds T_k's entries of rows shard I in column block c,
 // as (o, j, value) arrays in row order, zeros dropped.
 std::string rowsSection(const Step1Rows& rows, std::size_t firstRow, std::size_t columnBegin, std::size_t columnEnd) {
     std::vector<std::uint32_t> o, j;
@@ -61,40 +61,47 @@ std::string rowsSection(const Step1Rows& rows, std::size_t firstRow, std::size_t
 void runRows(const TaskContext& c, std::uint32_t index, const CancelToken& cancel) {
     const auto [begin, end] = c.shard(index);
     const TranslucentAsset& asset = c.prepared.asset;
-    const std::vector<Step1Rows> rows =
+    std::vector<Step1Rows> rows =
         compressRows(c.plan, toTransferSamples(asset.samples, asset.unitsPerMm), BasisLookup(asset.basis), begin, end,
                      nullptr, cancel);
-    std::vector<std::string> sections;
-    for (std::uint32_t block = 0; block < c.spec.shards; ++block) {
-        const auto [columnBegin, columnEnd] = c.shard(block);
-        for (const Step1Rows& k : rows) sections.push_back(rowsSection(k, begin, columnBegin, columnEnd));
+    // Section by section, each k's rows released once written: the rows are the peak.
+    TaskFileWriter file(c.folder.output(FarmStage::Rows, index), rows.size() * c.spec.shards);
+    for (Step1Rows& k : rows) {
+        for (std::uint32_t block = 0; block < c.spec.shards; ++block) {
+            const auto [columnBegin, columnEnd] = c.shard(block);
+            file.add(rowsSection(k, begin, columnBegin, columnEnd));
+        }
+        k = Step1Rows{};
     }
     passCrashPoints(FarmStage::Rows, index);
-    writeTaskFile(c.folder.output(FarmStage::Rows, index), sections);
+    file.commit();
 }
 
 // T_k's columns of block `index`, from every rows shard in row order.
 Step1Columns gatherBlock(const TaskContext& c, std::uint32_t index, std::size_t k) {
     const auto [begin, end] = c.shard(index);
-    std::vector<TaskFile> shards;
-    for (std::uint32_t s = 0; s < c.spec.shards; ++s) shards.emplace_back(c.folder.output(FarmStage::Rows, s));
-    // One shard's section at a time: the block's columns are the only whole thing held.
+    // T_k's entries of the block from every rows shard, read once (the block's entries and
+    // then its columns are what the task holds).
+    struct Entries {
+        std::vector<std::uint32_t> o, j;
+        std::vector<float> v;
+    };
+    std::vector<Entries> pieces;
+    for (std::uint32_t s = 0; s < c.spec.shards; ++s) {
+        SectionReader r = TaskFile(c.folder.output(FarmStage::Rows, s)).section(k * c.spec.shards + index);
+        Entries& e = pieces.emplace_back(Entries{r.array<std::uint32_t>("rows"), r.array<std::uint32_t>("columns"),
+                                                 r.array<float>("values")});
+        r.expectEnd();
+        if (e.j.size() != e.o.size() || e.v.size() != e.o.size())
+            r.fail("entries", "differ in count (" + std::to_string(e.o.size()) + " rows, " +
+                                  std::to_string(e.j.size()) + " columns, " + std::to_string(e.v.size()) + " values)");
+        for (std::size_t i = 0; i < e.o.size(); ++i)
+            if (e.o[i] >= c.plan.n() || e.j[i] < begin || e.j[i] >= end)
+                r.fail("entry " + std::to_string(i), "is outside the matrix or the block");
+    }
     return gatherColumns(begin, end, [&](auto&& visit) {
-        for (const TaskFile& shard : shards) {
-            SectionReader r = shard.section(index * c.plan.K() + k);
-            const auto o = r.array<std::uint32_t>("rows");
-            const auto j = r.array<std::uint32_t>("columns");
-            const auto v = r.array<float>("values");
-            r.expectEnd();
-            if (j.size() != o.size() || v.size() != o.size())
-                r.fail("entries", "differ in count (" + std::to_string(o.size()) + " rows, " +
-                                      std::to_string(j.size()) + " columns, " + std::to_string(v.size()) + " values)");
-            for (std::size_t e = 0; e < o.size(); ++e) {
-                if (o[e] >= c.plan.n() || j[e] < begin || j[e] >= end)
-                    r.fail("entry " + std::to_string(e), "is outside the matrix or the block");
-                visit(o[e], j[e], v[e]);
-            }
-        }
+        for (const Entries& e : pieces)
+            for (std::size_t i = 0; i < e.o.size(); ++i) visit(e.o[i], e.j[i], e.v[i]);
     });
 }
 
@@ -108,7 +115,7 @@ std::string columnsSection(const Step1Columns& columns) {
 }
 
 Step1Columns readColumns(const TaskContext& c, std::uint32_t index, std::size_t k) {
-    SectionReader r = TaskFile(c.folder.output(FarmStage::Columns, index)).section(1 + k);
+    SectionReader r = TaskFile(c.folder.output(FarmStage::Columns, index)).section(k);
     Step1Columns columns;
     columns.first = r.u64("first column");
     columns.offsets = r.array<std::uint64_t>("column offsets");
@@ -129,24 +136,26 @@ Step1Columns readColumns(const TaskContext& c, std::uint32_t index, std::size_t 
 void runColumns(const TaskContext& c, std::uint32_t index, const CancelToken& cancel) {
     const StageScope stage(nullptr, "", 0);
     EnergyHistogram histogram;
-    std::vector<std::string> sections(1);
+    // Sections 0 .. K-1: the block's columns of each T_k, one k held at a time; K: the
+    // histogram.
+    TaskFileWriter file(c.folder.output(FarmStage::Columns, index), c.plan.K() + 1);
     for (std::size_t k = 0; k < c.plan.K(); ++k) {
         const Step1Columns columns = gatherBlock(c, index, k);
         histogram.add(histogramOfColumns(columns, c.plan.layout, c.weights, k, stage, cancel));
-        sections.push_back(columnsSection(columns));
+        file.add(columnsSection(columns));
     }
     SectionWriter w;
     w.array(histogram.words());
-    sections[0] = w.take();
+    file.add(w.take());
     passCrashPoints(FarmStage::Columns, index);
-    writeTaskFile(c.folder.output(FarmStage::Columns, index), sections);
+    file.commit();
 }
 
 // The sum of every columns task's histogram: the same whatever the shards (exact sums).
 EnergyHistogram allEnergies(const TaskContext& c) {
     EnergyHistogram all;
     for (std::uint32_t s = 0; s < c.spec.shards; ++s) {
-        SectionReader r = TaskFile(c.folder.output(FarmStage::Columns, s)).section(0);
+        SectionReader r = TaskFile(c.folder.output(FarmStage::Columns, s)).section(c.plan.K());
         all.add(EnergyHistogram::fromWords(r.array<std::uint64_t>("energy histogram")));
         r.expectEnd();
     }
@@ -156,7 +165,7 @@ EnergyHistogram allEnergies(const TaskContext& c) {
 void runKeep(const TaskContext& c, std::uint32_t index, const CancelToken& cancel) {
     const int minBin = allEnergies(c).thresholdBin(c.plan.settings.energyFraction);
     const StageScope stage(nullptr, "", 0);
-    std::vector<std::string> sections;
+    TaskFileWriter file(c.folder.output(FarmStage::Keep, index), c.plan.K());
     for (std::size_t k = 0; k < c.plan.K(); ++k) {
         const KeptColumns kept =
             keptColumns(readColumns(c, index, k), c.plan.layout, c.weights, k, minBin, stage, cancel);
@@ -174,10 +183,10 @@ void runKeep(const TaskContext& c, std::uint32_t index, const CancelToken& cance
         w.array(counts);
         w.array(p);
         w.array(values);
-        sections.push_back(w.take());
+        file.add(w.take());
     }
     passCrashPoints(FarmStage::Keep, index);
-    writeTaskFile(c.folder.output(FarmStage::Keep, index), sections);
+    file.commit();
 }
 
 KeptColumns readKept(const TaskContext& c, std::uint32_t index, std::size_t k) {

@@ -59,20 +59,57 @@ void SectionReader::fail(std::string_view what, const std::string& problem) cons
                 ", past the section's " + std::to_string(bytes_.size()) + " bytes");
 }
 
-void writeTaskFile(const std::filesystem::path& path, std::span<const std::string> sections) {
-    std::string header(kMagic);
-    append(header, kVersion);
-    append(header, std::uint32_t(sections.size()));
-    for (const std::string& s : sections) {
-        append(header, std::uint64_t(s.size()));
-        append(header, checksum(s));
+namespace {
+
+std::string header(std::span<const std::uint64_t> sizes, std::span<const std::uint64_t> checksums) {
+    std::string h(kMagic);
+    append(h, kVersion);
+    append(h, std::uint32_t(sizes.size()));
+    for (std::size_t i = 0; i < sizes.size(); ++i) {
+        append(h, sizes[i]);
+        append(h, checksums[i]);
     }
-    append(header, checksum(header));
-    AtomicFileWriter file(path);
-    file.append(std::as_bytes(std::span(header.data(), header.size())));
-    for (const std::string& s : sections) file.append(std::as_bytes(std::span(s.data(), s.size())));
+    append(h, checksum(h));
+    return h;
+}
+
+std::span<const std::byte> bytesOf(const std::string& s) { return std::as_bytes(std::span(s.data(), s.size())); }
+
+}  // namespace
+
+TaskFileWriter::TaskFileWriter(const std::filesystem::path& path, std::size_t sectionCount)
+    : file_(std::make_unique<AtomicFileWriter>(path)), expected_(sectionCount) {
+    if (sectionCount > kMaxSections)
+        throw Error(path.string() + ": " + std::to_string(sectionCount) + " sections, at most " +
+                    std::to_string(kMaxSections));
+    const std::vector<std::uint64_t> zeros(sectionCount, 0);
+    file_->append(bytesOf(header(zeros, zeros)));  // the place of the header
+}
+
+TaskFileWriter::~TaskFileWriter() = default;
+
+void TaskFileWriter::add(const std::string& section) {
+    if (sizes_.size() == expected_)
+        throw Error(file_->target().string() + ": more than the " + std::to_string(expected_) + " sections announced");
+    file_->append(bytesOf(section));
+    sizes_.push_back(section.size());
+    checksums_.push_back(checksum(section));
+}
+
+void TaskFileWriter::commit() {
+    if (sizes_.size() != expected_)
+        throw Error(file_->target().string() + ": " + std::to_string(sizes_.size()) + " sections of the " +
+                    std::to_string(expected_) + " announced");
+    file_->overwrite(0, bytesOf(header(sizes_, checksums_)));
+    file_->commit();
+}
+
+void writeTaskFile(const std::filesystem::path& path, std::span<const std::string> sections) {
+    TaskFileWriter file(path, sections.size());
+    for (const std::string& s : sections) file.add(s);
     file.commit();
 }
+
 
 TaskFile::TaskFile(std::filesystem::path path) : path_(std::move(path)) {
     std::error_code error;

@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
+#include <memory>
 #include <span>
 #include <string>
 #include <string_view>
@@ -20,6 +21,8 @@
 #include <vector>
 
 namespace opal {
+
+class AtomicFileWriter;
 
 // The bytes of one section, built field by field (little-endian).
 class SectionWriter {
@@ -83,6 +86,25 @@ private:
     std::string bytes_;
     std::string context_;
     std::size_t at_ = 0;
+};
+
+// Writes a task file section by section, so that a task holds one section at a time: the
+// header is written last, over its place at the start. Nothing is at `path` until commit().
+class TaskFileWriter {
+public:
+    TaskFileWriter(const std::filesystem::path& path, std::size_t sectionCount);
+    ~TaskFileWriter();
+    TaskFileWriter(const TaskFileWriter&) = delete;
+    TaskFileWriter& operator=(const TaskFileWriter&) = delete;
+
+    void add(const std::string& section);
+    // Throws unless exactly sectionCount sections were added.
+    void commit();
+
+private:
+    std::unique_ptr<AtomicFileWriter> file_;
+    std::size_t expected_;
+    std::vector<std::uint64_t> sizes_, checksums_;
 };
 
 // Writes `sections` as a task file at `path`, atomically.
