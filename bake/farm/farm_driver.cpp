@@ -25,7 +25,7 @@ FarmFolder setUpFarmFolder(const FarmSpec& spec) {
     return folder;
 }
 
-LocalFarmResult runLocalFarm(const FarmFolder& folder, std::FILE* progress) {
+LocalFarmResult runLocalFarm(const FarmFolder& folder, std::FILE* progress, const CancelToken& cancel) {
     const FarmSpec spec = readFarmSpec(folder);
     const std::filesystem::path self = selfExecutable();
     LocalFarmResult result;
@@ -36,7 +36,8 @@ LocalFarmResult runLocalFarm(const FarmFolder& folder, std::FILE* progress) {
             if (progress)
                 std::fprintf(progress, "opal-bake: farm local: %s %u/%u\n", std::string(stageName(stage)).c_str(),
                              i + 1, count);
-            const TaskRun run = runTaskWithRetry(self, folder, stage, i);
+            cancel.throwIfRequested();
+            const TaskRun run = runTaskWithRetry(self, folder, stage, i, cancel);
             if (!run.ok) throw Error(run.error);
             ++result.tasks;
             if (run.attempts > 1) ++result.retried;

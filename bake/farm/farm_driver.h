@@ -4,6 +4,7 @@
 #pragma once
 
 #include "bake/farm/farm_spec.h"
+#include "bake/progress.h"
 
 #include <cstdint>
 #include <cstdio>
@@ -28,6 +29,7 @@ struct LocalFarmResult {
 // Runs every task of the folder's bake on this machine, stage after stage, each as its
 // own process (farm_task_runner.h), reporting progress on `progress` (may be null).
 // Throws opal::Error with the failed task's note when a task fails twice.
-LocalFarmResult runLocalFarm(const FarmFolder& folder, std::FILE* progress);
+// Throws Cancelled when `cancel` is requested.
+LocalFarmResult runLocalFarm(const FarmFolder& folder, std::FILE* progress, const CancelToken& cancel);
 
 }  // namespace opal

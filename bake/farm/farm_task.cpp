@@ -42,19 +42,24 @@ void passCrashPoints(FarmStage stage, std::uint32_t index) {
 
 // rows-I.task: section k * N + c holds T_k's entries of rows shard I in column block c,
 // as (o, j, value) arrays in row order, zeros dropped.
+// Written straight from the rows, in exactly the bytes it needs: the rows task's memory
+// beyond its rows is one section.
 std::string rowsSection(const Step1Rows& rows, std::size_t firstRow, std::size_t columnBegin, std::size_t columnEnd) {
-    std::vector<std::uint32_t> o, j;
-    std::vector<float> v;
-    forEachRowEntry(rows, firstRow, [&](std::uint32_t row, std::uint32_t column, float value) {
-        if (value == 0.0f || column < columnBegin || column >= columnEnd) return;
-        o.push_back(row);
-        j.push_back(column);
-        v.push_back(value);
-    });
+    const auto forEachKept = [&](auto&& visit) {
+        forEachRowEntry(rows, firstRow, [&](std::uint32_t row, std::uint32_t column, float value) {
+            if (value != 0.0f && column >= columnBegin && column < columnEnd) visit(row, column, value);
+        });
+    };
+    std::uint64_t count = 0;
+    forEachKept([&](std::uint32_t, std::uint32_t, float) { ++count; });
     SectionWriter w;
-    w.array(o);
-    w.array(j);
-    w.array(v);
+    w.reserve(3 * sizeof(std::uint64_t) + count * 12);
+    w.u64(count);
+    forEachKept([&](std::uint32_t o, std::uint32_t, float) { w.element(o); });
+    w.u64(count);
+    forEachKept([&](std::uint32_t, std::uint32_t j, float) { w.element(j); });
+    w.u64(count);
+    forEachKept([&](std::uint32_t, std::uint32_t, float v) { w.element(v); });
     return w.take();
 }
 
@@ -107,6 +112,7 @@ Step1Columns gatherBlock(const TaskContext& c, std::uint32_t index, std::size_t 
 
 std::string columnsSection(const Step1Columns& columns) {
     SectionWriter w;
+    w.reserve(4 * sizeof(std::uint64_t) + columns.offsets.size() * sizeof(std::uint64_t) + columns.row.size() * 8);
     w.u64(columns.first);
     w.array(columns.offsets);
     w.array(columns.row);
@@ -179,6 +185,7 @@ void runKeep(const TaskContext& c, std::uint32_t index, const CancelToken& cance
             }
         }
         SectionWriter w;
+        w.reserve(4 * sizeof(std::uint64_t) + counts.size() * 4 + p.size() * 8);
         w.u64(kept.first);
         w.array(counts);
         w.array(p);

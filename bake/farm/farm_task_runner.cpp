@@ -30,7 +30,7 @@ void note(const std::filesystem::path& log, const std::string& text) {
 }  // namespace
 
 TaskRun runTaskWithRetry(const std::filesystem::path& opalBake, const FarmFolder& folder, FarmStage stage,
-                         std::uint32_t index) {
+                         std::uint32_t index, const CancelToken& cancel) {
     std::filesystem::create_directories(folder.logs());
     const std::filesystem::path log = folder.log(stage, index);
     TaskRun run;
@@ -48,6 +48,8 @@ TaskRun runTaskWithRetry(const std::filesystem::path& opalBake, const FarmFolder
             run.ok = true;
             return run;
         }
+        if (cancel.requested()) note(log, "interrupted (" + e.describe() + ")");
+        cancel.throwIfRequested();
         endings.push_back(e.describe());
         lastOutput = lastLine(log);
         note(log, "attempt " + std::to_string(attempt) + " failed (" + e.describe() + ")");

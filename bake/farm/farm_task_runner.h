@@ -7,6 +7,7 @@
 #pragma once
 
 #include "bake/farm/farm_stage.h"
+#include "bake/progress.h"
 
 #include <cstdint>
 #include <filesystem>
@@ -21,7 +22,9 @@ struct TaskRun {
     std::string error;               // when !ok: what FOLDER/failed says
 };
 
+// Throws Cancelled (no retry, no failure recorded) when `cancel` is requested by the time
+// an attempt fails: an interrupted bake, or Slurm cancelling the job, is not a task's fault.
 TaskRun runTaskWithRetry(const std::filesystem::path& opalBake, const FarmFolder& folder, FarmStage stage,
-                         std::uint32_t index);
+                         std::uint32_t index, const CancelToken& cancel);
 
 }  // namespace opal

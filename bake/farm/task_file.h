@@ -41,6 +41,15 @@ public:
     void array(const std::vector<T>& values) {
         array(std::span<const T>(values));
     }
+    // One number without a count: for an array written element by element after its
+    // count (u64), when the values are not in one span.
+    template <class T>
+    void element(T v) {
+        static_assert(std::is_arithmetic_v<T>);
+        put(v);
+    }
+    // Room for `bytes` in all: a section written into exactly the memory it needs.
+    void reserve(std::size_t bytes) { bytes_.reserve(bytes); }
     std::string take() { return std::move(bytes_); }
 
 private:

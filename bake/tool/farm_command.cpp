@@ -6,6 +6,8 @@
 #include "bake/farm/farm_task.h"
 #include "bake/farm/farm_task_runner.h"
 #include "bake/farm/slurm_farm.h"
+#include "bake/procedural_mesh.h"
+#include "bake/sample_count.h"
 #include "schema/error.h"
 
 #include <tbb/global_control.h>
@@ -79,8 +81,8 @@ void FarmCommand::validate(bool jsonReport) const {
 }
 
 int FarmCommand::run(const BakeOptions& options, const std::string& stem, bool quiet, const CancelToken& cancel) const {
-    if (task_->parsed()) return runTask();
-    if (retry_->parsed()) return runWithRetry();
+    if (task_->parsed()) return runTask(cancel);
+    if (retry_->parsed()) return runWithRetry(cancel);
     if (!statusStem_.empty()) {
         const AssetStem asset(statusStem_);
         std::fputs(farmStatus(FarmFolder::forStem(std::filesystem::absolute(statusStem_)), asset.layer()).c_str(),
@@ -96,25 +98,25 @@ int FarmCommand::run(const BakeOptions& options, const std::string& stem, bool q
     return bake(options, stem, quiet, cancel);
 }
 
-int FarmCommand::runTask() const {
+int FarmCommand::runTask(const CancelToken& cancel) const {
     const FarmFolder folder(std::filesystem::absolute(taskFolder_));
     const FarmSpec spec = readFarmSpec(folder);
     // The bake's relative paths (input, stem) are the submitting opal-bake's.
     if (chdir(spec.workingDirectory.c_str()) != 0)
         throw Error(spec.workingDirectory + ": cannot enter the bake's working folder: " + std::strerror(errno));
     const auto cpuLimit = slurmCpuLimit();
-    const CancelToken never;
-    const FarmTaskResult result = runFarmTask(folder, stageArgument(taskStage_), *taskIndex_, never);
+    const FarmTaskResult result = runFarmTask(folder, stageArgument(taskStage_), *taskIndex_, cancel);
     std::printf("opal-bake farm-task %s %s: %s\n", taskStage_.c_str(), std::to_string(*taskIndex_).c_str(),
                 result.ranAlready ? "its output was there already" : "done");
     std::fputs(result.summary.c_str(), stdout);
     return 0;
 }
 
-int FarmCommand::runWithRetry() const {
+int FarmCommand::runWithRetry(const CancelToken& cancel) const {
     const FarmFolder folder(std::filesystem::absolute(taskFolder_));
     const FarmStage stage = stageArgument(taskStage_);
-    const TaskRun run = runTaskWithRetry(selfExecutable(), folder, stage, taskIndex_ ? *taskIndex_ : arrayIndex());
+    const TaskRun run =
+        runTaskWithRetry(selfExecutable(), folder, stage, taskIndex_ ? *taskIndex_ : arrayIndex(), cancel);
     if (run.ok) return 0;
     std::fprintf(stderr, "opal-bake: error: %s\n", run.error.c_str());
     if (std::filesystem::exists(folder.jobs())) cancelStagesAfter(folder, stage);
@@ -123,6 +125,11 @@ int FarmCommand::runWithRetry() const {
 
 int FarmCommand::bake(const BakeOptions& options, const std::string& stem, bool quiet,
                       const CancelToken& cancel) const {
+    // What the prepare task would refuse, refused before anything is set up or submitted.
+    (void)chartLayoutForSampleCount(options.samples);
+    std::error_code error;
+    if (!builtinMesh(options.input) && !std::filesystem::is_regular_file(options.input, error))
+        throw Error(options.input + ": no such input file");
     FarmSpec spec;
     spec.options = options;
     spec.stem = stem;
@@ -132,7 +139,7 @@ int FarmCommand::bake(const BakeOptions& options, const std::string& stem, bool 
     std::FILE* progress = quiet ? nullptr : stderr;
     if (farm_ == "local") {
         const FarmFolder folder = setUpFarmFolder(spec);
-        const LocalFarmResult result = runLocalFarm(folder, progress);
+        const LocalFarmResult result = runLocalFarm(folder, progress, cancel);
         if (!quiet)
             std::fprintf(stderr,
                          "opal-bake: farm local: %u tasks (%u retried), largest task peak RSS %.1f MiB (%s); "

@@ -37,8 +37,8 @@ public:
     int run(const BakeOptions& options, const std::string& stem, bool quiet, const CancelToken& cancel) const;
 
 private:
-    int runTask() const;
-    int runWithRetry() const;
+    int runTask(const CancelToken& cancel) const;
+    int runWithRetry(const CancelToken& cancel) const;
     int bake(const BakeOptions& options, const std::string& stem, bool quiet, const CancelToken& cancel) const;
 
     CLI::App* task_;

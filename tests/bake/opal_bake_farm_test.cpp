@@ -84,6 +84,19 @@ TEST(OpalBakeFarm, ATaskFailingTwiceFailsTheBakeNamingItsLogAndARerunResumes) {
     expectSameAsset(plain, farm, "resumed");
 }
 
+TEST(OpalBakeFarm, ABakeThePrepareTaskWouldRefuseFailsBeforeAnythingIsSetUp) {
+    const ScratchDir farm;
+    const test::RunResult samples = test::bakeWith(
+        {"builtin:candle", "--samples", "1000", "-o", (farm / "candle").string(), "--farm", "local"});
+    EXPECT_EQ(samples.exitCode, 1) << samples.err;
+    EXPECT_NE(samples.err.find("1000"), std::string::npos) << samples.err;
+    const test::RunResult input = test::bakeWith(
+        {(farm / "missing.obj").string(), "-o", (farm / "candle").string(), "--farm", "slurm", "--shards", "2"});
+    EXPECT_EQ(input.exitCode, 1) << input.err;
+    EXPECT_NE(input.err.find((farm / "missing.obj").string() + ": no such input file"), std::string::npos) << input.err;
+    EXPECT_EQ(farm.list(), std::vector<std::string>{});  // no candle.farm, no lock, nothing submitted
+}
+
 TEST(OpalBakeFarm, ADamagedTaskFileIsRefusedNamingTheFileAndSection) {
     const ScratchDir dir;
     const std::filesystem::path file = dir / "rows-0000.task";
