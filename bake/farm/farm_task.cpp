@@ -7,6 +7,8 @@
 #include "schema/error.h"
 #include "schema/usd/crash_point.h"
 
+#include <unistd.h>
+
 #include <cstdlib>
 #include <sstream>
 
@@ -234,8 +236,14 @@ std::string runMerge(const TaskContext& c, const CancelToken& cancel) {
     finishBake(c.spec.options, asset, nullptr, cancel, &report);
     passCrashPoints(FarmStage::Merge, 0);
     writeBakedAsset(std::filesystem::path(c.spec.stem), asset, &report);
-    std::error_code ignored;  // the asset is written: the intermediates are of no more use
-    std::filesystem::remove_all(c.folder.path(), ignored);
+    // The asset is written: the intermediates are of no more use. Renamed away first, so
+    // that the folder disappears at once for whoever follows the bake (--wait), not file by
+    // file while gigabytes are removed.
+    std::error_code ignored;
+    std::filesystem::path doomed = c.folder.path();
+    doomed += ".removing-" + std::to_string(getpid());
+    std::filesystem::rename(c.folder.path(), doomed, ignored);
+    std::filesystem::remove_all(ignored ? c.folder.path() : doomed, ignored);
     std::ostringstream s;
     for (const std::string& w : report.warnings) s << "opal-bake: warning: " << w << '\n';
     s << formatBakeSummary(c.spec.stem, report);
