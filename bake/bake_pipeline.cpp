@@ -138,8 +138,8 @@ std::string assetName(const std::string& input) {
 
 }  // namespace
 
-TranslucentAsset bakeAsset(const BakeOptions& options, ProgressSink* progress, const CancelToken& cancel,
-                           BakeReport* report) {
+TranslucentAsset prepareBake(const BakeOptions& options, ProgressSink* progress, const CancelToken& cancel,
+                             BakeReport* report) {
     BakeReport local;
     BakeReport& r = report ? *report : local;
     StageClock clock(&r);
@@ -200,18 +200,21 @@ TranslucentAsset bakeAsset(const BakeOptions& options, ProgressSink* progress, c
     clock.lap("basis");
     cancel.throwIfRequested();
 
-    asset.transfer = buildTransfer(asset.samples, asset.layout, asset.unitsPerMm, asset.basis, options.transfer,
-                                   progress, cancel, &r.transfer);
-    clock.lap("transfer");
-
-    asset.environment = buildEnvironmentTransfer(asset.mesh, asset.samples, options.visibility, progress, cancel);
-    clock.lap("visibility");
-
     asset.bake.source = options.input;
     asset.bake.scheme = std::string(subdivisionSchemeName(subdivision.scheme));
     asset.bake.level = std::uint32_t(subdivision.level);
     asset.bake.seed = options.seed;
     asset.bake.envTerms = options.visibility.terms;
+    return asset;
+}
+
+void finishBake(const BakeOptions& options, TranslucentAsset& asset, ProgressSink* progress,
+                const CancelToken& cancel, BakeReport* report) {
+    BakeReport local;
+    BakeReport& r = report ? *report : local;
+    StageClock clock(&r);
+    asset.environment = buildEnvironmentTransfer(asset.mesh, asset.samples, options.visibility, progress, cancel);
+    clock.lap("visibility");
 
     {
         StageScope stage(progress, "measure transfer error", 1);
@@ -227,6 +230,18 @@ TranslucentAsset bakeAsset(const BakeOptions& options, ProgressSink* progress, c
     r.subdivisionLevel = asset.bake.level;
     r.renderVertices = asset.mesh.points.size();
     r.peakRssBytes = peakRssBytes();
+}
+
+TranslucentAsset bakeAsset(const BakeOptions& options, ProgressSink* progress, const CancelToken& cancel,
+                           BakeReport* report) {
+    BakeReport local;
+    BakeReport& r = report ? *report : local;
+    TranslucentAsset asset = prepareBake(options, progress, cancel, &r);
+    const auto start = std::chrono::steady_clock::now();
+    asset.transfer = buildTransfer(asset.samples, asset.layout, asset.unitsPerMm, asset.basis, options.transfer,
+                                   progress, cancel, &r.transfer);
+    r.seconds.emplace_back("transfer", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    finishBake(options, asset, progress, cancel, &r);
     return asset;
 }
 

@@ -52,7 +52,17 @@ struct BakeReport {
     std::vector<std::string> warnings;
 };
 
-// Runs every stage up to a complete in-memory asset, with its bake identifier
+// The stages before the transfer (import .. basis): the asset without its transfer and
+// environment, its bake settings filled in. Throws opal::Error (or Cancelled).
+TranslucentAsset prepareBake(const BakeOptions& options, ProgressSink* progress, const CancelToken& cancel,
+                             BakeReport* report);
+
+// The stages after the transfer, on the asset prepareBake gave and its transfer: the
+// environment visibility, the transfer error, the bake identifier, the report's sizes.
+void finishBake(const BakeOptions& options, TranslucentAsset& asset, ProgressSink* progress,
+                const CancelToken& cancel, BakeReport* report);
+
+// prepareBake, buildTransfer, finishBake: every stage up to a complete in-memory asset, with its bake identifier
 // (bake_identifier.h). Throws opal::Error (or Cancelled).
 TranslucentAsset bakeAsset(const BakeOptions& options, ProgressSink* progress, const CancelToken& cancel,
                            BakeReport* report);

@@ -1,13 +1,15 @@
 // opal-bake INPUT -o OUT_STEM [options]: bakes a mesh into an Opal asset (OUT_STEM.usda +
 // OUT_STEM.<bake id>.opal, bake/asset_stem.h). opal-bake light SPEC -o OUT_STEM [options]:
 // bakes a local light's shadow field (bake/tool/light_command.h). opal-bake batch
-// MANIFEST.json: bakes many assets (bake/tool/batch_command.h). Exit codes: 0 done, 1 error (including
-// another bake writing the same stem), 2 bad arguments, 130/143 interrupted by
-// SIGINT/SIGTERM (nothing written; a previous asset stays intact).
+// MANIFEST.json: bakes many assets (bake/tool/batch_command.h). opal-bake INPUT -o OUT_STEM
+// --farm local|slurm: the same bake as farm tasks (bake/tool/farm_command.h). Exit codes: 0
+// done, 1 error (including another bake writing the same stem), 2 bad arguments, 130/143
+// interrupted by SIGINT/SIGTERM (nothing written; a previous asset stays intact).
 #include "bake/bake_pipeline.h"
 #include "bake/bake_report.h"
 #include "bake/procedural_mesh.h"
 #include "bake/tool/batch_command.h"
+#include "bake/tool/farm_command.h"
 #include "bake/tool/light_command.h"
 
 #include <CLI/CLI.hpp>
@@ -54,6 +56,7 @@ int main(int argc, char** argv) {
     app.add_option("-o,--output", outStem, "output stem: writes STEM.usda and its sidecar STEM.<bake id>.opal");
     opal::LightCommand light(app);  // not const: parsing writes its options
     opal::BatchCommand batch(app);
+    opal::FarmCommand farm(app);
     app.require_subcommand(0, 1);
     app.add_option("--scheme", options.scheme,
                    "subdivision scheme; auto: a .usda's subdivisionScheme, else loop for all-triangle meshes, "
@@ -96,9 +99,10 @@ int main(int argc, char** argv) {
     app.add_flag("-q,--quiet", quiet, "no progress output");
     try {
         app.parse(argc, argv);
-        const bool subcommand = light.chosen() || batch.chosen();
+        const bool subcommand = light.chosen() || batch.chosen() || farm.standalone();
         if (!subcommand && options.input.empty()) throw CLI::RequiredError("input");
         if (!subcommand && outStem.empty()) throw CLI::RequiredError("--output");
+        farm.validate(!jsonPath.empty());
         if (!range.empty() && range != "presets") options.range = parseRange(range);
         if (level != "auto") options.level = std::uint32_t(std::stoul(level));
     } catch (const CLI::ParseError& e) {
@@ -116,6 +120,7 @@ int main(int argc, char** argv) {
     try {
         if (light.chosen()) return light.run(&progress, cancel);
         if (batch.chosen()) return batch.run(cancel);
+        if (farm.standalone() || farm.farmBake()) return farm.run(options, outStem, quiet, cancel);
         // Taken before the work, so that a second bake of the stem fails at once.
         const opal::StemLock lock{opal::AssetStem(outStem)};
         opal::BakeReport report;

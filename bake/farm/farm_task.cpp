@@ -1,0 +1,291 @@
+#include "bake/farm/farm_task.h"
+
+#include "bake/bake_report.h"
+#include "bake/farm/farm_spec.h"
+#include "bake/farm/task_file.h"
+#include "bake/transfer_stages.h"
+#include "schema/error.h"
+#include "schema/usd/crash_point.h"
+
+#include <unistd.h>
+
+#include <cstdlib>
+#include <sstream>
+
+namespace opal {
+
+namespace {
+
+// Everything a task knows about the bake: the spec, the prepared asset and the plan.
+struct TaskContext {
+    FarmFolder folder;
+    FarmSpec spec;
+    PreparedBake prepared;
+    TransferPlan plan;
+    Step2Weights weights;
+
+    explicit TaskContext(const FarmFolder& f)
+        : folder(f),
+          spec(readFarmSpec(f)),
+          prepared(readPreparedBake(f)),
+          plan(planTransfer(prepared.asset.samples.size(), prepared.asset.layout, prepared.asset.basis,
+                            spec.options.transfer)),
+          weights(step2Weights(prepared.asset.layout, prepared.asset.basis)) {}
+
+    std::pair<std::size_t, std::size_t> shard(std::uint32_t i) const { return shardRange(plan.n(), spec.shards, i); }
+};
+
+void passCrashPoints(FarmStage stage, std::uint32_t index) {
+    const std::string point = "farm:" + std::string(stageName(stage)) + "-" + std::to_string(index);
+    crashPoint(point);
+    const char* attempt = std::getenv(kFarmAttemptVariable);
+    crashPoint(point + ":attempt-" + (attempt ? attempt : "1"));
+}
+
+// rows-I.task: section k * N + c holds T_k's entries of rows shard I in column block c,
+// as (o, j, value) arrays in row order, zeros dropped.
+// Written straight from the rows, in exactly the bytes it needs: the rows task's memory
+// beyond its rows is one section.
+std::string rowsSection(const Step1Rows& rows, std::size_t firstRow, std::size_t columnBegin, std::size_t columnEnd) {
+    const auto forEachKept = [&](auto&& visit) {
+        forEachRowEntry(rows, firstRow, [&](std::uint32_t row, std::uint32_t column, float value) {
+            if (value != 0.0f && column >= columnBegin && column < columnEnd) visit(row, column, value);
+        });
+    };
+    std::uint64_t count = 0;
+    forEachKept([&](std::uint32_t, std::uint32_t, float) { ++count; });
+    SectionWriter w;
+    w.reserve(3 * sizeof(std::uint64_t) + count * 12);
+    w.u64(count);
+    forEachKept([&](std::uint32_t o, std::uint32_t, float) { w.element(o); });
+    w.u64(count);
+    forEachKept([&](std::uint32_t, std::uint32_t j, float) { w.element(j); });
+    w.u64(count);
+    forEachKept([&](std::uint32_t, std::uint32_t, float v) { w.element(v); });
+    return w.take();
+}
+
+void runRows(const TaskContext& c, std::uint32_t index, const CancelToken& cancel) {
+    const auto [begin, end] = c.shard(index);
+    const TranslucentAsset& asset = c.prepared.asset;
+    std::vector<Step1Rows> rows =
+        compressRows(c.plan, toTransferSamples(asset.samples, asset.unitsPerMm), BasisLookup(asset.basis), begin, end,
+                     nullptr, cancel);
+    // Section by section, each k's rows released once written: the rows are the peak.
+    TaskFileWriter file(c.folder.output(FarmStage::Rows, index), rows.size() * c.spec.shards);
+    for (Step1Rows& k : rows) {
+        for (std::uint32_t block = 0; block < c.spec.shards; ++block) {
+            const auto [columnBegin, columnEnd] = c.shard(block);
+            file.add(rowsSection(k, begin, columnBegin, columnEnd));
+        }
+        k = Step1Rows{};
+    }
+    passCrashPoints(FarmStage::Rows, index);
+    file.commit();
+}
+
+// T_k's columns of block `index`, from every rows shard in row order.
+Step1Columns gatherBlock(const TaskContext& c, std::uint32_t index, std::size_t k) {
+    const auto [begin, end] = c.shard(index);
+    // T_k's entries of the block from every rows shard, read once (the block's entries and
+    // then its columns are what the task holds).
+    struct Entries {
+        std::vector<std::uint32_t> o, j;
+        std::vector<float> v;
+    };
+    std::vector<Entries> pieces;
+    for (std::uint32_t s = 0; s < c.spec.shards; ++s) {
+        SectionReader r = TaskFile(c.folder.output(FarmStage::Rows, s)).section(k * c.spec.shards + index);
+        Entries& e = pieces.emplace_back(Entries{r.array<std::uint32_t>("rows"), r.array<std::uint32_t>("columns"),
+                                                 r.array<float>("values")});
+        r.expectEnd();
+        if (e.j.size() != e.o.size() || e.v.size() != e.o.size())
+            r.fail("entries", "differ in count (" + std::to_string(e.o.size()) + " rows, " +
+                                  std::to_string(e.j.size()) + " columns, " + std::to_string(e.v.size()) + " values)");
+        for (std::size_t i = 0; i < e.o.size(); ++i)
+            if (e.o[i] >= c.plan.n() || e.j[i] < begin || e.j[i] >= end)
+                r.fail("entry " + std::to_string(i), "is outside the matrix or the block");
+    }
+    return gatherColumns(begin, end, [&](auto&& visit) {
+        for (const Entries& e : pieces)
+            for (std::size_t i = 0; i < e.o.size(); ++i) visit(e.o[i], e.j[i], e.v[i]);
+    });
+}
+
+std::string columnsSection(const Step1Columns& columns) {
+    SectionWriter w;
+    w.reserve(4 * sizeof(std::uint64_t) + columns.offsets.size() * sizeof(std::uint64_t) + columns.row.size() * 8);
+    w.u64(columns.first);
+    w.array(columns.offsets);
+    w.array(columns.row);
+    w.array(columns.value);
+    return w.take();
+}
+
+Step1Columns readColumns(const TaskContext& c, std::uint32_t index, std::size_t k) {
+    SectionReader r = TaskFile(c.folder.output(FarmStage::Columns, index)).section(k);
+    Step1Columns columns;
+    columns.first = r.u64("first column");
+    columns.offsets = r.array<std::uint64_t>("column offsets");
+    columns.row = r.array<std::uint32_t>("rows");
+    columns.value = r.array<float>("values");
+    r.expectEnd();
+    const auto [begin, end] = c.shard(index);
+    if (columns.first != begin || columns.offsets.size() != end - begin + 1 || columns.offsets.front() != 0 ||
+        columns.offsets.back() != columns.row.size() || columns.value.size() != columns.row.size())
+        r.fail("columns", "do not describe block " + std::to_string(begin) + ".." + std::to_string(end));
+    for (std::size_t j = 0; j + 1 < columns.offsets.size(); ++j)
+        if (columns.offsets[j] > columns.offsets[j + 1]) r.fail("column offsets", "decrease");
+    for (std::uint32_t o : columns.row)
+        if (o >= c.plan.n()) r.fail("rows", "name an output past the matrix");
+    return columns;
+}
+
+void runColumns(const TaskContext& c, std::uint32_t index, const CancelToken& cancel) {
+    const StageScope stage(nullptr, "", 0);
+    EnergyHistogram histogram;
+    // Sections 0 .. K-1: the block's columns of each T_k, one k held at a time; K: the
+    // histogram.
+    TaskFileWriter file(c.folder.output(FarmStage::Columns, index), c.plan.K() + 1);
+    for (std::size_t k = 0; k < c.plan.K(); ++k) {
+        const Step1Columns columns = gatherBlock(c, index, k);
+        histogram.add(histogramOfColumns(columns, c.plan.layout, c.weights, k, stage, cancel));
+        file.add(columnsSection(columns));
+    }
+    SectionWriter w;
+    w.array(histogram.words());
+    file.add(w.take());
+    passCrashPoints(FarmStage::Columns, index);
+    file.commit();
+}
+
+// The sum of every columns task's histogram: the same whatever the shards (exact sums).
+EnergyHistogram allEnergies(const TaskContext& c) {
+    EnergyHistogram all;
+    for (std::uint32_t s = 0; s < c.spec.shards; ++s) {
+        SectionReader r = TaskFile(c.folder.output(FarmStage::Columns, s)).section(c.plan.K());
+        all.add(EnergyHistogram::fromWords(r.array<std::uint64_t>("energy histogram")));
+        r.expectEnd();
+    }
+    return all;
+}
+
+void runKeep(const TaskContext& c, std::uint32_t index, const CancelToken& cancel) {
+    const int minBin = allEnergies(c).thresholdBin(c.plan.settings.energyFraction);
+    const StageScope stage(nullptr, "", 0);
+    TaskFileWriter file(c.folder.output(FarmStage::Keep, index), c.plan.K());
+    for (std::size_t k = 0; k < c.plan.K(); ++k) {
+        const KeptColumns kept =
+            keptColumns(readColumns(c, index, k), c.plan.layout, c.weights, k, minBin, stage, cancel);
+        std::vector<std::uint32_t> counts, p;
+        std::vector<float> values;
+        for (const auto& column : kept.columns) {
+            counts.push_back(std::uint32_t(column.size()));
+            for (const KeptEntry& e : column) {
+                p.push_back(e.p);
+                values.push_back(e.value);
+            }
+        }
+        SectionWriter w;
+        w.reserve(4 * sizeof(std::uint64_t) + counts.size() * 4 + p.size() * 8);
+        w.u64(kept.first);
+        w.array(counts);
+        w.array(p);
+        w.array(values);
+        file.add(w.take());
+    }
+    passCrashPoints(FarmStage::Keep, index);
+    file.commit();
+}
+
+KeptColumns readKept(const TaskContext& c, std::uint32_t index, std::size_t k) {
+    SectionReader r = TaskFile(c.folder.output(FarmStage::Keep, index)).section(k);
+    KeptColumns kept;
+    kept.first = r.u64("first column");
+    const auto counts = r.array<std::uint32_t>("counts");
+    const auto p = r.array<std::uint32_t>("outputs");
+    const auto values = r.array<float>("values");
+    r.expectEnd();
+    const auto [begin, end] = c.shard(index);
+    if (kept.first != begin || counts.size() != end - begin || values.size() != p.size())
+        r.fail("kept columns", "do not describe block " + std::to_string(begin) + ".." + std::to_string(end));
+    std::size_t at = 0;
+    kept.columns.resize(counts.size());
+    for (std::size_t j = 0; j < counts.size(); ++j) {
+        if (counts[j] > p.size() - at) r.fail("counts", "exceed the " + std::to_string(p.size()) + " entries");
+        for (std::uint32_t e = 0; e < counts[j]; ++e, ++at) kept.columns[j].push_back({p[at], values[at]});
+    }
+    if (at != p.size()) r.fail("counts", "leave entries over");
+    return kept;
+}
+
+std::string runMerge(const TaskContext& c, const CancelToken& cancel) {
+    const EnergyHistogram all = allEnergies(c);
+    const int minBin = all.thresholdBin(c.plan.settings.energyFraction);
+    TranslucentAsset asset = c.prepared.asset;
+    asset.transfer = transferShell(c.plan, minBin, c.weights);
+    for (std::size_t k = 0; k < c.plan.K(); ++k) {
+        KeptMatrixAssembler matrix(c.plan.n());
+        for (std::uint32_t s = 0; s < c.spec.shards; ++s) matrix.count(readKept(c, s, k));
+        for (std::uint32_t s = 0; s < c.spec.shards; ++s) matrix.fill(readKept(c, s, k));
+        asset.transfer.perBasis.push_back(matrix.take());
+    }
+    BakeReport report;
+    report.warnings = c.prepared.warnings;
+    report.transfer = transferStats(c.plan, asset.transfer, all.fractionFrom(minBin));
+    finishBake(c.spec.options, asset, nullptr, cancel, &report);
+    passCrashPoints(FarmStage::Merge, 0);
+    writeBakedAsset(std::filesystem::path(c.spec.stem), asset, &report);
+    // The asset is written: the intermediates are of no more use. Renamed away first, so
+    // that the folder disappears at once for whoever follows the bake (--wait), not file by
+    // file while gigabytes are removed.
+    std::error_code ignored;
+    std::filesystem::path doomed = c.folder.path();
+    doomed += ".removing-" + std::to_string(getpid());
+    std::filesystem::rename(c.folder.path(), doomed, ignored);
+    std::filesystem::remove_all(ignored ? c.folder.path() : doomed, ignored);
+    std::ostringstream s;
+    for (const std::string& w : report.warnings) s << "opal-bake: warning: " << w << '\n';
+    s << formatBakeSummary(c.spec.stem, report);
+    return s.str();
+}
+
+}  // namespace
+
+FarmTaskResult runFarmTask(const FarmFolder& folder, FarmStage stage, std::uint32_t index, const CancelToken& cancel) {
+    FarmTaskResult result;
+    try {
+        if (index >= taskCount(stage, readFarmSpec(folder).shards))
+            throw Error("there is no such task (the bake has " +
+                        std::to_string(taskCount(stage, readFarmSpec(folder).shards)) + " " +
+                        std::string(stageName(stage)) + " tasks)");
+        if (stage != FarmStage::Merge && isCompleteTaskFile(folder.output(stage, index))) {
+            result.ranAlready = true;
+            return result;
+        }
+        if (stage == FarmStage::Prepare) {
+            const FarmSpec spec = readFarmSpec(folder);
+            BakeReport report;
+            PreparedBake prepared{prepareBake(spec.options, nullptr, cancel, &report), {}};
+            prepared.warnings = report.warnings;
+            passCrashPoints(stage, index);
+            writePreparedBake(folder, prepared);
+            return result;
+        }
+        const TaskContext context(folder);
+        switch (stage) {
+        case FarmStage::Rows: runRows(context, index, cancel); break;
+        case FarmStage::Columns: runColumns(context, index, cancel); break;
+        case FarmStage::Keep: runKeep(context, index, cancel); break;
+        case FarmStage::Merge: result.summary = runMerge(context, cancel); break;
+        case FarmStage::Prepare: break;
+        }
+        return result;
+    } catch (const Cancelled&) {
+        throw;
+    } catch (const std::exception& e) {
+        throw Error("farm task " + taskName(stage, index) + " (" + folder.path().string() + "): " + e.what());
+    }
+}
+
+}  // namespace opal

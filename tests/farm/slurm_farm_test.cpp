@@ -1,0 +1,91 @@
+// opal-bake --farm slurm through a real single-node Slurm cluster (scripts/slurm-cluster,
+// started by the ctest fixture `slurm`; SLURM_CONF points at it): the asset of 4 shards is
+// byte-identical to the plain bake's; a task killed mid-way is run again and the asset is
+// still identical; a task failing twice fails the bake naming its log, and leaves nothing
+// of the bake in the queue (the stages behind it cancelled, not pending forever).
+#include "tests/bake/farm_test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace opal {
+namespace {
+
+using namespace std::chrono_literals;
+using test::expectSameAsset;
+using test::PlainBake;
+using test::ScratchDir;
+using test::with;
+
+// Job ids opal-bake printed ("STAGE ID" a line), in stage order.
+std::vector<std::string> jobIds(const std::string& out) {
+    std::istringstream lines(out);
+    std::vector<std::string> ids;
+    std::string stage, id;
+    while (lines >> stage >> id)
+        ids.push_back(id);
+    return ids;
+}
+
+// squeue's lines for these jobs (array job id, state).
+std::string queued(const std::vector<std::string>& ids) {
+    const test::RunResult q = test::run({"/usr/bin/squeue", "-h", "-o", "%F %T"}, 30s);
+    EXPECT_EQ(q.exitCode, 0) << q.err;
+    std::istringstream lines(q.out);
+    std::string line, found;
+    while (std::getline(lines, line))
+        for (const std::string& id : ids)
+            if (line.rfind(id + " ", 0) == 0) found += line + "\n";
+    return found;
+}
+
+TEST(SlurmFarm, FourShardsThroughSlurmAreByteIdenticalToThePlainBake) {
+    ASSERT_NE(std::getenv("SLURM_CONF"), nullptr) << "run through ctest: its fixture starts the cluster";
+    const PlainBake plain;
+    const ScratchDir farm;
+    const test::RunResult r = test::bakeWith(
+        with(test::kFarmOptions, {"-o", (farm / "candle").string(), "--farm", "slurm", "--shards", "4", "--wait"}));
+    ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+    EXPECT_EQ(jobIds(r.out).size(), 5u) << r.out;  // prepare, rows, columns, keep, merge
+    expectSameAsset(plain, farm, "slurm, 4 shards");
+}
+
+TEST(SlurmFarm, ATaskKilledMidWayIsRunAgainAndTheAssetIsUnchanged) {
+    const PlainBake plain;
+    const ScratchDir farm;
+    const test::RunResult r = test::bakeWith(
+        with(test::kFarmOptions, {"-o", (farm / "candle").string(), "--farm", "slurm", "--shards", "4", "--wait"}),
+        {"OPAL_CRASH_AT=farm:rows-2:attempt-1"});
+    ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+    expectSameAsset(plain, farm, "slurm, rows 2 killed once");
+}
+
+TEST(SlurmFarm, ATaskFailingTwiceFailsTheBakeNamingItsLogAndLeavesNothingQueued) {
+    const ScratchDir farm;
+    const test::RunResult r = test::bakeWith(
+        with(test::kFarmOptions, {"-o", (farm / "candle").string(), "--farm", "slurm", "--shards", "4", "--wait"}),
+        {"OPAL_CRASH_AT=farm:columns-3"});
+    EXPECT_EQ(r.exitCode, 1) << r.out << r.err;
+    const std::string log = (farm / "candle.farm" / "logs" / "columns-3.log").string();
+    EXPECT_NE(
+        r.err.find("farm task columns 3 failed twice (killed by signal 9, then killed by signal 9); its log: " + log),
+        std::string::npos)
+        << r.err;
+    EXPECT_TRUE(std::filesystem::exists(log));
+    EXPECT_FALSE(std::filesystem::exists(farm / "candle.usda"));
+    const std::vector<std::string> ids = jobIds(r.out);
+    ASSERT_EQ(ids.size(), 5u) << r.out;
+    // The keep and merge arrays are cancelled at once; give slurmctld a moment to drop
+    // the columns array's last tasks.
+    std::string left;
+    for (int i = 0; i < 40 && !(left = queued(ids)).empty(); ++i)
+        std::this_thread::sleep_for(250ms);
+    EXPECT_EQ(left, "") << "jobs of the failed bake are still queued";
+}
+
+}  // namespace
+}  // namespace opal
