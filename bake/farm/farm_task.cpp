@@ -7,8 +7,6 @@
 #include "schema/error.h"
 #include "schema/usd/crash_point.h"
 
-#include <unistd.h>
-
 #include <cstdlib>
 #include <sstream>
 
@@ -236,14 +234,12 @@ std::string runMerge(const TaskContext& c, const CancelToken& cancel) {
     finishBake(c.spec.options, asset, nullptr, cancel, &report);
     passCrashPoints(FarmStage::Merge, 0);
     writeBakedAsset(std::filesystem::path(c.spec.stem), asset, &report);
-    // The asset is written: the intermediates are of no more use. Renamed away first, so
-    // that the folder disappears at once for whoever follows the bake (--wait), not file by
-    // file while gigabytes are removed.
+    // The asset is written: the intermediates are of no more use. The folder itself goes
+    // last, so its absence (what --wait looks for) means nothing of the bake is left; a
+    // folder renamed away first would still be there, under another name, when --wait
+    // returned.
     std::error_code ignored;
-    std::filesystem::path doomed = c.folder.path();
-    doomed += ".removing-" + std::to_string(getpid());
-    std::filesystem::rename(c.folder.path(), doomed, ignored);
-    std::filesystem::remove_all(ignored ? c.folder.path() : doomed, ignored);
+    std::filesystem::remove_all(c.folder.path(), ignored);
     std::ostringstream s;
     for (const std::string& w : report.warnings) s << "opal-bake: warning: " << w << '\n';
     s << formatBakeSummary(c.spec.stem, report);
