@@ -1,5 +1,6 @@
 #include "bake/tool/batch_command.h"
 
+#include "bake/farm/child_process.h"
 #include "bake/tool/batch_manifest.h"
 #include "schema/asset/bake_id.h"
 #include "schema/asset/xxhash64.h"
@@ -7,18 +8,12 @@
 
 #include <nlohmann/json.hpp>
 
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <sstream>
-
-extern char** environ;
 
 namespace opal {
 namespace {
@@ -79,27 +74,16 @@ bool unchanged(const BatchEntry& e, std::uint64_t key) {
     return readFile(withSuffix(e.output, ".batch")) == formatBakeId(key) + "\n";
 }
 
-// Runs opal-bake for one entry, its output to STEM.batch.log; returns the exit code.
+// Runs opal-bake for one entry, its output to STEM.batch.log (this attempt's only, since
+// the summary quotes its last line); returns the exit code, 128 + the signal that ended it.
 int bakeOnce(const BatchEntry& e) {
-    std::vector<std::string> args = {"opal-bake", e.input, "-o", e.output.string(), "--quiet"};
+    std::vector<std::string> args = {e.input, "-o", e.output.string(), "--quiet"};
     args.insert(args.end(), e.args.begin(), e.args.end());
-    std::vector<char*> argv;
-    for (std::string& a : args) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    const std::string log = withSuffix(e.output, ".batch.log").string();
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    posix_spawn_file_actions_adddup2(&actions, 1, 2);
-    pid_t pid = 0;
-    const int spawned = posix_spawn(&pid, "/proc/self/exe", &actions, nullptr, argv.data(), environ);
-    posix_spawn_file_actions_destroy(&actions);
-    if (spawned != 0) throw Error("batch: cannot start opal-bake for " + e.output.string());
-    int status = 0;
-    while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-    }
-    if (WIFEXITED(status)) return WEXITSTATUS(status);
-    return 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+    const std::filesystem::path log = withSuffix(e.output, ".batch.log");
+    std::error_code ignored;
+    std::filesystem::remove(log, ignored);
+    const ChildExit exit = runLogged(selfExecutable(), args, log, {});
+    return exit.exitCode >= 0 ? exit.exitCode : 128 + exit.signal;
 }
 
 std::string lastLine(const std::filesystem::path& file) {
