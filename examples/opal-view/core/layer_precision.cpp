@@ -39,6 +39,7 @@ hd::LightDesc storable(hd::LightDesc desc) {
     desc.angle = storable(desc.angle);
     desc.flicker.amplitude = storable(desc.flicker.amplitude);
     desc.flicker.frequency = storable(desc.flicker.frequency);
+    desc.colorTemperature = storable(desc.colorTemperature);
     return desc;
 }
 
