@@ -1,6 +1,7 @@
 #include "schema/asset/asset_layer.h"
 
 #include "schema/asset/bake_id.h"
+#include "schema/asset/display_color.h"
 #include "schema/asset/point_range.h"
 #include "schema/asset/sidecar.h"
 #include "schema/asset/sidecar_checks.h"
@@ -49,6 +50,17 @@ void addMesh(usda::Prim& prim, const RenderMesh& mesh) {
     prim.addAttribute("points", Value::make<types::Point3fArray>(toVecs(mesh.points)));
     // The render mesh is already the refined limit surface: USD must not subdivide again.
     prim.addAttribute("subdivisionScheme", Value::token("none"), true);
+}
+
+// The preview for hosts without Opal (display_color.h); Opal itself never reads it.
+void addDisplayColor(usda::Prim& prim, const TranslucentAsset& asset) {
+    const std::vector<Imath::V3f> colors = displayColors(asset);
+    if (colors.empty()) return;
+    std::vector<usda::Vec3f> values;
+    values.reserve(colors.size());
+    for (const Imath::V3f& c : colors) values.push_back(toVec(c));
+    usda::Attribute& color = prim.addAttribute("primvars:displayColor", Value::make<types::Color3fArray>(std::move(values)));
+    color.metadata.set("interpolation", Value::token("vertex"));
 }
 
 void addSubsurface(usda::Prim& prim, const TranslucentAsset& asset, const std::string& sidecar) {
@@ -154,6 +166,7 @@ usda::Layer assetToLayer(const TranslucentAsset& asset, const std::string& sidec
     custom.set("opalBake", Value::dictionary(bakeDictionary(asset.bake)));
     prim.metadata.set("customData", Value::dictionary(std::move(custom)));
     addMesh(prim, asset.mesh);
+    addDisplayColor(prim, asset);
     addSubsurface(prim, asset, sidecarAssetPath);
 
     usda::Layer layer;
