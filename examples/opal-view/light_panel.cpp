@@ -80,17 +80,8 @@ bool colorTemperature(hd::LightDesc& light) {
 
 void lightParameters(ViewerModel& model, const hd::SdfPath& path) {
     hd::LightDesc light = model.light(path);
-    bool changed = false;
-    float intensity = float(light.intensity), exposure = float(light.exposure);
+    bool changed = emissionSliders(light);
     float color[3] = {float(light.color[0]), float(light.color[1]), float(light.color[2])};
-    if (ImGui::SliderFloat("intensity", &intensity, 0.0f, 1e7f, "%.4g", ImGuiSliderFlags_Logarithmic)) {
-        light.intensity = std::max(intensity, 0.0f);
-        changed = true;
-    }
-    if (ImGui::SliderFloat("exposure", &exposure, -10.0f, 10.0f, "%.2f stops")) {
-        light.exposure = exposure;
-        changed = true;
-    }
     if (ImGui::ColorEdit3("color", color, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR)) {
         light.color = Rgb{std::max(color[0], 0.0f), std::max(color[1], 0.0f), std::max(color[2], 0.0f)};
         changed = true;
@@ -104,6 +95,21 @@ void lightParameters(ViewerModel& model, const hd::SdfPath& path) {
 }
 
 }  // namespace
+
+bool emissionSliders(hd::LightDesc& light, const char* id) {
+    bool changed = false;
+    float intensity = float(light.intensity), exposure = float(light.exposure);
+    if (ImGui::SliderFloat((std::string("intensity") + id).c_str(), &intensity, 0.0f, 1e7f, "%.4g",
+                           ImGuiSliderFlags_Logarithmic)) {
+        light.intensity = std::max(intensity, 0.0f);
+        changed = true;
+    }
+    if (ImGui::SliderFloat((std::string("exposure") + id).c_str(), &exposure, -10.0f, 10.0f, "%.2f stops")) {
+        light.exposure = exposure;
+        changed = true;
+    }
+    return changed;
+}
 
 void drawLightPanel(ViewerModel& model, std::string& problem) {
     if (!ImGui::CollapsingHeader("Lights", ImGuiTreeNodeFlags_DefaultOpen)) return;

@@ -12,4 +12,8 @@ namespace opal::view {
 // `problem`: the last refused rename or removal, shown until one succeeds.
 void drawLightPanel(ViewerModel& model, std::string& problem);
 
+// A light's intensity (logarithmic) and exposure sliders; `id` keeps two sets of them in
+// one window apart ("##dome"). True when either changed.
+bool emissionSliders(hd::LightDesc& light, const char* id = "");
+
 }  // namespace opal::view

@@ -178,6 +178,7 @@ void Viewer::drawInterface() {
     ImGui::Begin("Look");
     drawMaterialPanel(model_);
     drawLightPanel(model_, lightProblem_);
+    drawEnvironmentPanel(model_, environment_);
     drawColorPanel(display_, settings_);
     ImGui::End();
     drawKeyboardHelp(panels_.help);

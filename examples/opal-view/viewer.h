@@ -12,6 +12,7 @@
 #include "examples/opal-view/core/script_runner.h"
 #include "examples/opal-view/core/viewer_model.h"
 #include "examples/opal-view/display_settings.h"
+#include "examples/opal-view/environment_panel.h"
 #include "examples/opal-view/hud.h"
 #include "examples/opal-view/imgui_layer.h"
 #include "examples/opal-view/menu_bar.h"
@@ -80,6 +81,7 @@ private:
     RecentFiles recent_;
     PanelVisibility panels_;
     std::string lightProblem_, settingsProblem_;
+    EnvironmentPanelState environment_;
     int framesSincePanels_ = 0;  // interface frames drawn since a script opened or closed a panel
     std::string renderError_;
     PictureTag requested_, shown_;

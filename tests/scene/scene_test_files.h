@@ -47,19 +47,24 @@ public:
     }
 
     // STEM.usda + STEM.opal: a 5 mm cube-sphere (6 x 4 x 4 samples), scene units = mm,
-    // with a bake identifier in both halves as a bake writes it.
-    std::filesystem::path writeSphereAsset(const std::string& stem) const {
-        static const std::shared_ptr<const TranslucentAsset> sphere = [] {
-            auto asset = std::make_shared<TranslucentAsset>(*sphereAsset(2, 5.0f, 0));
-            asset->bake.identifier = 0x5e1f0b5e55ed0001ull;
-            return asset;
-        }();
-        writeSidecar(path_ / (stem + ".opal"), *sphere);
-        writeAssetLayer(path_ / (stem + ".usda"), *sphere, "./" + stem + ".opal");
+    // with a bake identifier in both halves as a bake writes it; without environment
+    // vectors unless `domeLit` (then 6 x 8 x 8 texels each, so that a dome light lights it).
+    std::filesystem::path writeSphereAsset(const std::string& stem, bool domeLit = false) const {
+        static const std::shared_ptr<const TranslucentAsset> plain = sphere(0, 0x5e1f0b5e55ed0001ull);
+        static const std::shared_ptr<const TranslucentAsset> lit = sphere(8, 0x5e1f0b5e55ed0002ull);
+        const TranslucentAsset& asset = domeLit ? *lit : *plain;
+        writeSidecar(path_ / (stem + ".opal"), asset);
+        writeAssetLayer(path_ / (stem + ".usda"), asset, "./" + stem + ".opal");
         return path_ / (stem + ".usda");
     }
 
 private:
+    static std::shared_ptr<const TranslucentAsset> sphere(std::uint32_t envFaceSize, std::uint64_t identifier) {
+        auto asset = std::make_shared<TranslucentAsset>(*sphereAsset(2, 5.0f, envFaceSize));
+        asset->bake.identifier = identifier;
+        return asset;
+    }
+
     std::filesystem::path path_;
 };
 

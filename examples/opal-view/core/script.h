@@ -16,6 +16,9 @@
 //   light remove PATH
 //   light rename PATH NAME             a new last element of its path
 //   light enable|disable PATH          a disabled light stays in the scene, unlit
+//   environment rotate DEGREES         turns the dome (the first DomeLight) about +Y
+//   environment texture FILE           a lat-long image for the dome
+//   environment background on|off      whether the camera sees the dome behind the asset
 //   undo | redo                        material and light edits
 //   setting KEY VALUE                  a render setting of the delegate (opal:reference true,
 //                                      opal:samplesPerPixel 4, ...), typed by its descriptor
@@ -49,7 +52,7 @@ namespace opal::view {
 
 enum class ActionKind {
     Load, MaterialSet, MaterialReset, MaterialPreset, LightMove, LightSet, LightAdd, LightRemove, LightRename,
-    LightEnable, Undo, Redo, Setting, Panel, View, Exposure, Aov, CameraFrame, CameraReset, CameraOrbit, Wait, Drag, Screenshot,
+    LightEnable, Environment, Undo, Redo, Setting, Panel, View, Exposure, Aov, CameraFrame, CameraReset, CameraOrbit, Wait, Drag, Screenshot,
     SaveExr, SavePng, SaveUsda, Probe, Quit
 };
 

@@ -2,6 +2,7 @@
 
 #include "examples/opal-view/core/color_temperature.h"
 #include "examples/opal-view/core/edited_scene.h"
+#include "examples/opal-view/core/environment_edit.h"
 #include "schema/error.h"
 
 #include <algorithm>
@@ -57,6 +58,17 @@ void runLight(const ScriptAction& action, ViewerModel& model) {
     if (parameter == "color") light.color = Rgb{action.numbers[0], action.numbers[1], action.numbers[2]};
     if (parameter == "temperature") setColorTemperature(light, action.numbers.empty() ? 0.0 : action.numbers[0]);
     model.setLight(path, light);
+}
+
+void runEnvironment(const ScriptAction& action, ViewerModel& model) {
+    const std::optional<hd::SdfPath> dome = environmentLight(model.scene());
+    if (!dome) throw Error("the scene has no dome light (add one: light add dome)");
+    hd::LightDesc light = model.light(*dome);
+    const std::string& what = action.words.at(0);
+    if (what == "rotate") rotateEnvironment(light, action.numbers.at(0));
+    if (what == "texture") setEnvironmentTexture(light, action.words.at(1));
+    if (what == "background") light.visibleToCamera = action.words.at(1) == "on";
+    model.setLight(*dome, light);
 }
 
 void runCamera(const ScriptAction& action, ViewerModel& model) {
@@ -172,6 +184,7 @@ bool ScriptRunner::run(const ScriptAction& action, ScriptHost& host) {
     case ActionKind::LightRemove:
     case ActionKind::LightRename:
     case ActionKind::LightEnable: runLightSet(action, model); return true;
+    case ActionKind::Environment: runEnvironment(action, model); return true;
     case ActionKind::Undo:
     case ActionKind::Redo: runHistory(action, model); return true;
     case ActionKind::Setting: model.setRenderSettingText(action.words[0], action.words[1]); return true;
