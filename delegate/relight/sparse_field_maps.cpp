@@ -11,6 +11,8 @@ SparseFieldMaps::SparseFieldMaps(const ShadowFieldLookup& lookup, std::uint32_t 
         std::vector<Imath::V3f> terms;
     };
     std::vector<Sparse> each(maps);
+    offsets_.push_back(0);
+    if (maps == 0) return;
     (void)lookup.mapTerms(0, faceSize);  // a bad face size throws here, not inside the workers
     tbb::parallel_for(std::size_t(0), maps, [&](std::size_t m) {
         const std::vector<Imath::V3f> terms = lookup.mapTerms(m, faceSize);
@@ -21,7 +23,6 @@ SparseFieldMaps::SparseFieldMaps(const ShadowFieldLookup& lookup, std::uint32_t 
         }
     });
     offsets_.reserve(maps + 1);
-    offsets_.push_back(0);
     for (Sparse& s : each) {
         texels_.insert(texels_.end(), s.texels.begin(), s.texels.end());
         terms_.insert(terms_.end(), s.terms.begin(), s.terms.end());
