@@ -38,9 +38,13 @@ void drawColorPanel(DisplayPicture& picture, DisplaySettings& settings) {
         picture.setDisplayView(picture.display(), view);
         ++settings.version;
     }
-    float exposure = float(settings.exposure);
+    float exposure = float(settings.grade.exposure), gamma = float(settings.grade.gamma);
     if (ImGui::SliderFloat("exposure", &exposure, -10.0f, 10.0f, "%.2f stops")) {
-        settings.exposure = exposure;
+        settings.grade.exposure = exposure;
+        ++settings.version;
+    }
+    if (ImGui::SliderFloat("gamma", &gamma, 0.2f, 5.0f, "%.2f", ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp)) {
+        settings.grade.gamma = gamma;
         ++settings.version;
     }
     if (const std::string aov = pick("AOV", settings.aov, aovNames()); !aov.empty()) {

@@ -1,6 +1,9 @@
 // What the picture is shown as, besides the OCIO display and view (DisplayPicture): the
-// AOV and the exposure. `version` grows with every change, so the picture is redone.
+// AOV, the exposure and the gamma. `version` grows with every change, so the picture is
+// redone.
 #pragma once
+
+#include "examples/opal-view/core/display_picture.h"
 
 #include <string>
 
@@ -8,7 +11,7 @@ namespace opal::view {
 
 struct DisplaySettings {
     std::string aov = "color";
-    double exposure = 0.0;  // stops, applied in scene-linear before the view transform
+    DisplayGrade grade;  // exposure before the view transform, gamma after it
     int version = 0;
 };
 

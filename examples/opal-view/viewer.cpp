@@ -232,7 +232,7 @@ void Viewer::refreshPicture() {
                              : newEdit || (!sameFrame(tag, requested_) && now - lastPicture_ >= RefineInterval);
     if (!due) return;
     PictureRequest request{&model_.session().buffer(settings_.aov), settings_.aov, display_.display(), display_.view(),
-                           settings_.exposure, tag, !settled};
+                           settings_.grade, tag, !settled};
     if (!converter_.request(std::move(request))) return;
     requested_ = tag;
     lastPicture_ = now;
@@ -279,7 +279,13 @@ void Viewer::setDisplayView(const std::string& display, const std::string& view)
 }
 
 void Viewer::setExposure(double stops) {
-    settings_.exposure = stops;
+    settings_.grade.exposure = stops;
+    ++settings_.version;
+}
+
+void Viewer::setGamma(double gamma) {
+    if (!(gamma > 0.0) || !std::isfinite(gamma)) throw Error("gamma " + std::to_string(gamma) + " is not a positive number");
+    settings_.grade.gamma = gamma;
     ++settings_.version;
 }
 
@@ -332,7 +338,7 @@ void Viewer::savePng(const std::filesystem::path& file) {
     if (linear.empty()) throw Error("save png " + file.string() + ": nothing is rendered yet");
     Image picture;
     // Isolated: this thread must not pick up the renderer's tiles meanwhile.
-    tbb::this_task_arena::isolate([&] { picture = display_.toFile(linear, settings_.aov, settings_.exposure); });
+    tbb::this_task_arena::isolate([&] { picture = display_.toFile(linear, settings_.aov, settings_.grade); });
     writePreview(file, picture);
     std::cout << "opal-view: wrote " << file.string() << std::endl;
 }

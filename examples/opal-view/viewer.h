@@ -39,6 +39,7 @@ public:
     void open(const std::filesystem::path& file) override;
     void setDisplayView(const std::string& display, const std::string& view) override;
     void setExposure(double stops) override;
+    void setGamma(double gamma) override;
     void setAov(const std::string& aov) override;
     void showPanel(const std::string& panel, bool open) override;
     bool pictureSettled() override;

@@ -65,28 +65,39 @@ void DisplayPicture::setDisplayView(const std::string& display, const std::strin
     transform_ = DisplayTransform(config_, display, view);
 }
 
-Image DisplayPicture::toDisplay(const Image& sceneLinear, const std::string& aov, double exposure) const {
+// Display-referred RGB (the first three channels) to the power 1 / gamma.
+void applyGamma(Image& image, double gamma) {
+    if (gamma == 1.0) return;
+    const float power = float(1.0 / gamma);
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x)
+            for (int c = 0; c < 3; ++c) image.at(x, y, c) = std::pow(std::max(image.at(x, y, c), 0.0f), power);
+}
+
+Image DisplayPicture::toDisplay(const Image& sceneLinear, const std::string& aov, const DisplayGrade& grade) const {
     if (sceneLinear.empty()) return {};
     if (aov == "normal") return normals(sceneLinear);
     if (aov == "depth") return depth(sceneLinear);
     if (aov == "primId") return ids(sceneLinear);
     if (!radiometric(aov)) return perPixel(sceneLinear, [](float*) {});
-    const float gain = float(std::exp2(exposure));
+    const float gain = float(std::exp2(grade.exposure));
     Image rgb = perPixel(sceneLinear, [gain](float* c) {
         for (int i = 0; i < 3; ++i) c[i] *= gain;
     });
     transform_.applyInPlace(rgb);
+    applyGamma(rgb, grade.gamma);
     return rgb;
 }
 
-Image DisplayPicture::toFile(const Image& sceneLinear, const std::string& aov, double exposure) const {
-    if (aov != "color" || sceneLinear.channels() != 4) return toDisplay(sceneLinear, aov, exposure);
+Image DisplayPicture::toFile(const Image& sceneLinear, const std::string& aov, const DisplayGrade& grade) const {
+    if (aov != "color" || sceneLinear.channels() != 4) return toDisplay(sceneLinear, aov, grade);
     Image rgba = sceneLinear;
-    const float gain = float(std::exp2(exposure));
+    const float gain = float(std::exp2(grade.exposure));
     for (int y = 0; y < rgba.height(); ++y)
         for (int x = 0; x < rgba.width(); ++x)
             for (int c = 0; c < 3; ++c) rgba.at(x, y, c) *= gain;
     transform_.applyInPlace(rgba);
+    applyGamma(rgba, grade.gamma);
     return rgba;
 }
 

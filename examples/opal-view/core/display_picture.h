@@ -18,6 +18,15 @@ namespace opal::view {
 // render pass allocated it.
 Image mappedImage(const hd::RenderBuffer& buffer);
 
+// The adjustments around the view transform, for radiometric AOVs: exposure (stops) scales
+// the scene-linear radiance before it; gamma raises the display-referred result to the
+// power 1 / gamma after it, as a compositing viewer's gamma does.
+struct DisplayGrade {
+    double exposure = 0.0;
+    double gamma = 1.0;  // > 0
+    friend bool operator==(const DisplayGrade&, const DisplayGrade&) = default;
+};
+
 class DisplayPicture {
 public:
     // The config's default display and view; throws opal::Error as DisplayTransform.
@@ -30,10 +39,10 @@ public:
     const ColorConfig& config() const { return config_; }
 
     // `aov` names what `sceneLinear` holds (hd/aov.h). Returns an RGB image.
-    Image toDisplay(const Image& sceneLinear, const std::string& aov, double exposure) const;
+    Image toDisplay(const Image& sceneLinear, const std::string& aov, const DisplayGrade& grade) const;
     // What a saved PNG holds: toDisplay's picture, except that the color AOV keeps its
     // alpha (RGBA through the view, as opal-render's --preview), so it composites.
-    Image toFile(const Image& sceneLinear, const std::string& aov, double exposure) const;
+    Image toFile(const Image& sceneLinear, const std::string& aov, const DisplayGrade& grade) const;
 
 private:
     ColorConfig config_;

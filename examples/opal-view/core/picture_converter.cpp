@@ -88,7 +88,7 @@ ConvertedPicture PictureConverter::convert(const PictureRequest& request) {
         const Image mapped = mappedImage(*request.buffer);
         const Image linear = request.halfResolution ? halved(mapped) : mapped;
         // Isolated: while its rows run, this thread must not pick up the renderer's tiles.
-        tbb::this_task_arena::isolate([&] { picture.image = display_.toDisplay(linear, request.aov, request.exposure); });
+        tbb::this_task_arena::isolate([&] { picture.image = display_.toDisplay(linear, request.aov, request.grade); });
     } catch (const std::exception& e) {
         picture.error = e.what();
     }

@@ -25,7 +25,7 @@ struct PictureTag {
 struct PictureRequest {
     const hd::RenderBuffer* buffer = nullptr;
     std::string aov, display, view;
-    double exposure = 0.0;
+    DisplayGrade grade;
     PictureTag tag;
     // Convert a quarter of the pixels (2 x 2 averaged in scene-linear): while a picture
     // is still changing, a conversion four times as fast matters more than its detail.

@@ -54,6 +54,7 @@ constexpr ActionForm Forms[] = {
     {"view W W", ActionKind::View},
     {"exposure N", ActionKind::Exposure},
     {"aov W", ActionKind::Aov},
+    {"gamma N", ActionKind::Gamma},
     {"camera frame", ActionKind::CameraFrame},
     {"camera reset", ActionKind::CameraReset},
     {"camera orbit N N", ActionKind::CameraOrbit},

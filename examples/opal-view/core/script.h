@@ -24,6 +24,7 @@
 //                                      opal:samplesPerPixel 4, ...), typed by its descriptor
 //   view DISPLAY VIEW                  the OCIO display and view
 //   exposure STOPS                     display exposure
+//   gamma G                            display gamma: the shown values to the power 1 / G
 //   aov NAME                           the AOV shown (hd/aov.h)
 //   panel help|stats|settings|probe on|off   the optional panels (the View menu)
 //   camera frame|reset
@@ -52,7 +53,7 @@ namespace opal::view {
 
 enum class ActionKind {
     Load, MaterialSet, MaterialReset, MaterialPreset, LightMove, LightSet, LightAdd, LightRemove, LightRename,
-    LightEnable, Environment, Undo, Redo, Setting, Panel, View, Exposure, Aov, CameraFrame, CameraReset, CameraOrbit, Wait, Drag, Screenshot,
+    LightEnable, Environment, Undo, Redo, Setting, Panel, View, Exposure, Gamma, Aov, CameraFrame, CameraReset, CameraOrbit, Wait, Drag, Screenshot,
     SaveExr, SavePng, SaveUsda, Probe, Quit
 };
 

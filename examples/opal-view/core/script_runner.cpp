@@ -192,6 +192,7 @@ bool ScriptRunner::run(const ScriptAction& action, ScriptHost& host) {
     case ActionKind::LightSet: runLight(action, model); return true;
     case ActionKind::View: host.setDisplayView(action.words[0], action.words[1]); return true;
     case ActionKind::Exposure: host.setExposure(action.numbers[0]); return true;
+    case ActionKind::Gamma: host.setGamma(action.numbers[0]); return true;
     case ActionKind::Aov: host.setAov(action.words[0]); return true;
     case ActionKind::Panel: host.showPanel(action.words[0], action.words[1] == "on"); return true;
     case ActionKind::CameraFrame:

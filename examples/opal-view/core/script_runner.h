@@ -22,6 +22,7 @@ public:
     virtual void open(const std::filesystem::path& file) = 0;  // loads and resets the display
     virtual void setDisplayView(const std::string& display, const std::string& view) = 0;
     virtual void setExposure(double stops) = 0;
+    virtual void setGamma(double gamma) = 0;  // throws opal::Error unless positive
     virtual void setAov(const std::string& aov) = 0;
     // Opens or closes an optional panel: help, stats, settings or probe.
     virtual void showPanel(const std::string& panel, bool open) = 0;
