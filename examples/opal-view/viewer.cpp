@@ -9,6 +9,7 @@
 #include "examples/opal-view/probe_tooltip.h"
 #include "examples/opal-view/core/default_scene.h"
 #include "examples/opal-view/core/pixel_probe.h"
+#include "examples/opal-view/camera_panel.h"
 #include "examples/opal-view/light_panel.h"
 #include "examples/opal-view/material_panel.h"
 #include "examples/opal-view/screenshot.h"
@@ -179,6 +180,7 @@ void Viewer::drawInterface() {
     drawMaterialPanel(model_);
     drawLightPanel(model_, lightProblem_);
     drawEnvironmentPanel(model_, environment_);
+    drawCameraPanel(model_);
     drawColorPanel(display_, settings_);
     ImGui::End();
     drawKeyboardHelp(panels_.help);

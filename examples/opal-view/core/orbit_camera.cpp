@@ -1,6 +1,7 @@
 #include "examples/opal-view/core/orbit_camera.h"
 
 #include "examples/opal-view/core/layer_precision.h"
+#include "schema/error.h"
 
 #include <algorithm>
 #include <cmath>
@@ -46,6 +47,12 @@ double halfFieldOfView(const OrbitCamera& camera, double aspect) {
     const Imath::V2d film2 = visibleFilm(camera, aspect);
     const double film = std::min(film2.x, film2.y);
     return std::atan(0.5 * film / camera.focalLength);
+}
+
+void setFocalLength(OrbitCamera& camera, double focalLength) {
+    if (!(focalLength >= 1.0 && focalLength <= 10000.0))
+        throw Error("focal length " + std::to_string(focalLength) + " is outside 1 to 10000");
+    camera.focalLength = focalLength;
 }
 
 hd::CameraDesc cameraDesc(const OrbitCamera& camera, const BoundingSphere& scene) {

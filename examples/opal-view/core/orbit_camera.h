@@ -37,6 +37,9 @@ hd::CameraDesc cameraDesc(const OrbitCamera& camera, const BoundingSphere& scene
 // Half the smaller field of view, radians, for a viewport of this aspect (width / height).
 double halfFieldOfView(const OrbitCamera& camera, double aspect);
 
+// A focal length in [1, 10000] (the film's unit); throws opal::Error naming the range.
+void setFocalLength(OrbitCamera& camera, double focalLength);
+
 void tumble(OrbitCamera& camera, double dxPixels, double dyPixels);
 void track(OrbitCamera& camera, double dxPixels, double dyPixels, int viewportHeight, double aspect);
 // steps > 0 moves closer (a wheel notch is one step: 10% of the distance).

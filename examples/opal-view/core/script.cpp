@@ -58,6 +58,7 @@ constexpr ActionForm Forms[] = {
     {"camera frame", ActionKind::CameraFrame},
     {"camera reset", ActionKind::CameraReset},
     {"camera orbit N N", ActionKind::CameraOrbit},
+    {"camera focal N", ActionKind::CameraFocal},
     {"wait", ActionKind::Wait},
     {"wait N", ActionKind::Wait},
     {"drag =material N", ActionKind::Drag},

@@ -74,6 +74,7 @@ void runEnvironment(const ScriptAction& action, ViewerModel& model) {
 void runCamera(const ScriptAction& action, ViewerModel& model) {
     if (action.kind == ActionKind::CameraFrame) return model.frameAll();
     if (action.kind == ActionKind::CameraReset) return model.resetCamera();
+    if (action.kind == ActionKind::CameraFocal) return setFocalLength(model.camera, action.numbers[0]);
     model.camera.yaw += action.numbers[0];
     model.camera.pitch = std::clamp(model.camera.pitch + action.numbers[1], -89.0, 89.0);
 }
@@ -197,7 +198,8 @@ bool ScriptRunner::run(const ScriptAction& action, ScriptHost& host) {
     case ActionKind::Panel: host.showPanel(action.words[0], action.words[1] == "on"); return true;
     case ActionKind::CameraFrame:
     case ActionKind::CameraReset:
-    case ActionKind::CameraOrbit: runCamera(action, model); return true;
+    case ActionKind::CameraOrbit:
+    case ActionKind::CameraFocal: runCamera(action, model); return true;
     case ActionKind::Wait:
         return waitForPicture(action, host, action.numbers.empty() ? DefaultWaitSeconds : action.numbers[0]);
     case ActionKind::Drag: return drag(action, host);

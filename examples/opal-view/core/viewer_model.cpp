@@ -283,8 +283,11 @@ int ViewerModel::update() {
                             std::exchange(pendingSettings_, {}));
 }
 
+// A camera moved since the last update() is not in the picture yet, however converged the
+// picture is.
 bool ViewerModel::settled() const {
-    return session_ && !edited_->changed() && viewport_ == submitted_ && pendingSettings_.empty() && session_->settled();
+    if (!session_ || !sameCamera(cameraDesc(camera, bounds_), scene().cameras.at(ViewCameraPath).desc)) return false;
+    return !edited_->changed() && viewport_ == submitted_ && pendingSettings_.empty() && session_->settled();
 }
 
 }  // namespace opal::view
