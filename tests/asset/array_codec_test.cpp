@@ -21,15 +21,15 @@ namespace opal {
 namespace {
 using test::errorOf;
 
-const FileKind kKind{"TEST", {1, 0}};
+const FileKind kCodecKind{"TEST", {1, 0}};
 
 // Writes `values` as one chunk of half planes and reads them back.
 std::vector<float> throughFile(const test::TempDir& dir, std::span<const float> values) {
     const auto path = dir / "h.opal";
-    writeChunkedFile(path, kKind, std::vector{ChunkProducer{"HALF", ChunkCodec::Zstd, true, [&](ChunkSink& s) {
+    writeChunkedFile(path, kCodecKind, std::vector{ChunkProducer{"HALF", ChunkCodec::Zstd, true, [&](ChunkSink& s) {
                                                                writeHalfPlanes(s, values);
                                                            }}});
-    ChunkedFileReader reader(path, kKind);
+    ChunkedFileReader reader(path, kCodecKind);
     ChunkSource source = reader.open("HALF");
     std::vector<float> back = readHalfPlanes(source, values.size(), "values");
     source.finish();
@@ -108,10 +108,10 @@ TEST(HalfPlanes, EmptyAndAllZeroArraysRoundTrip) {
 std::vector<std::int64_t> varintsFrom(const test::TempDir& dir, const std::vector<std::byte>& bytes,
                                       std::uint64_t count) {
     const auto path = dir / "v.opal";
-    writeChunkedFile(path, kKind, std::vector{ChunkProducer{"VINT", ChunkCodec::Raw, true, [&](ChunkSink& s) {
+    writeChunkedFile(path, kCodecKind, std::vector{ChunkProducer{"VINT", ChunkCodec::Raw, true, [&](ChunkSink& s) {
                                                                s.write(bytes);
                                                            }}});
-    ChunkedFileReader reader(path, kKind);
+    ChunkedFileReader reader(path, kCodecKind);
     ChunkSource source = reader.open("VINT");
     std::vector<std::int64_t> values = readVarints(source, count, "steps");
     source.finish();
@@ -133,10 +133,10 @@ TEST(Varints, RoundTripSignedValuesOfEveryLength) {
     std::mt19937_64 rng(9);
     for (int i = 0; i < 2000; ++i) values.push_back(std::int64_t(rng()) >> (rng() % 64));
     const auto path = dir / "r.opal";
-    writeChunkedFile(path, kKind, std::vector{ChunkProducer{"VINT", ChunkCodec::Zstd, true, [&](ChunkSink& s) {
+    writeChunkedFile(path, kCodecKind, std::vector{ChunkProducer{"VINT", ChunkCodec::Zstd, true, [&](ChunkSink& s) {
                                                                writeVarints(s, values);
                                                            }}});
-    ChunkedFileReader reader(path, kKind);
+    ChunkedFileReader reader(path, kCodecKind);
     ChunkSource source = reader.open("VINT");
     EXPECT_EQ(readVarints(source, values.size(), "values"), values);
     source.finish();

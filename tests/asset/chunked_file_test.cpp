@@ -14,7 +14,7 @@ namespace {
 
 using test::TempDir;
 
-const FileKind kKind{"TEST", {1, 2}};
+const FileKind kChunkedKind{"TEST", {1, 2}};
 
 std::vector<std::byte> pattern(std::size_t n, std::uint32_t seed, bool compressible) {
     std::mt19937 rng(seed);
@@ -54,9 +54,9 @@ TEST(ChunkedFile, RoundTripsRawZstdEmptyAndLargeChunks) {
                                          bytesChunk("ZST1", ChunkCodec::Zstd, large),
                                          bytesChunk("EMPZ", ChunkCodec::Zstd, empty),
                                          bytesChunk("EMPR", ChunkCodec::Raw, empty)};
-    writeChunkedFile(path, kKind, chunks);
+    writeChunkedFile(path, kChunkedKind, chunks);
 
-    ChunkedFileReader reader(path, kKind);
+    ChunkedFileReader reader(path, kChunkedKind);
     EXPECT_EQ(reader.version().major, 1);
     EXPECT_EQ(reader.version().minor, 2);
     ASSERT_EQ(reader.chunks().size(), 4u);
@@ -79,8 +79,8 @@ TEST(ChunkedFile, WritesAreDeterministic) {
     TempDir dir;
     auto data = pattern(200000, 3, false);
     std::vector<ChunkProducer> chunks = {bytesChunk("DATA", ChunkCodec::Zstd, data)};
-    writeChunkedFile(dir / "a.opal", kKind, chunks);
-    writeChunkedFile(dir / "b.opal", kKind, chunks);
+    writeChunkedFile(dir / "a.opal", kChunkedKind, chunks);
+    writeChunkedFile(dir / "b.opal", kChunkedKind, chunks);
     EXPECT_EQ(test::readBytes(dir / "a.opal"), test::readBytes(dir / "b.opal"));
 }
 
@@ -88,7 +88,7 @@ TEST(ChunkedFile, WriterFailingMidWriteLeavesPreviousFileAndNoTemporary) {
     TempDir dir;
     auto path = dir / "asset.opal";
     auto data = pattern(2 << 20, 4, false);  // larger than the writer's buffer: bytes hit the disk
-    writeChunkedFile(path, kKind, std::vector{bytesChunk("OLD1", ChunkCodec::Zstd, data)});
+    writeChunkedFile(path, kChunkedKind, std::vector{bytesChunk("OLD1", ChunkCodec::Zstd, data)});
     const std::vector<std::byte> before = test::readBytes(path);
 
     std::vector<ChunkProducer> failing = {
@@ -98,22 +98,22 @@ TEST(ChunkedFile, WriterFailingMidWriteLeavesPreviousFileAndNoTemporary) {
              throw Error("producer failed after writing part of chunk NEW2");
          }},
     };
-    expectError([&] { writeChunkedFile(path, kKind, failing); }, {"producer failed"});
+    expectError([&] { writeChunkedFile(path, kChunkedKind, failing); }, {"producer failed"});
     EXPECT_EQ(test::readBytes(path), before);
     EXPECT_EQ(dir.entries(), std::vector<std::string>{"asset.opal"});
 
-    expectError([&] { writeChunkedFile(dir / "fresh.opal", kKind, failing); }, {"producer failed"});
+    expectError([&] { writeChunkedFile(dir / "fresh.opal", kChunkedKind, failing); }, {"producer failed"});
     EXPECT_EQ(dir.entries(), std::vector<std::string>{"asset.opal"});
 }
 
 TEST(ChunkedFile, WriterRejectsBadChunkListsAndPaths) {
     TempDir dir;
     std::vector<std::byte> none;
-    expectError([&] { writeChunkedFile(dir / "d.opal", kKind, std::vector{bytesChunk("SAME", ChunkCodec::Raw, none),
+    expectError([&] { writeChunkedFile(dir / "d.opal", kChunkedKind, std::vector{bytesChunk("SAME", ChunkCodec::Raw, none),
                                                                         bytesChunk("SAME", ChunkCodec::Raw, none)}); },
                 {"d.opal", "chunk 'SAME'", "twice"});
-    expectError([&] { writeChunkedFile(dir / "missing" / "x.opal", kKind, {}); }, {"x.opal", "temporary"});
-    expectError([&] { writeChunkedFile(dir / "l.opal", kKind, std::vector{bytesChunk("ZZZZ", ChunkCodec::Zstd, none)}, {99}); },
+    expectError([&] { writeChunkedFile(dir / "missing" / "x.opal", kChunkedKind, {}); }, {"x.opal", "temporary"});
+    expectError([&] { writeChunkedFile(dir / "l.opal", kChunkedKind, std::vector{bytesChunk("ZZZZ", ChunkCodec::Zstd, none)}, {99}); },
                 {"l.opal", "chunk 'ZZZZ'", "zstd level 99"});
     EXPECT_TRUE(dir.entries().empty());
 }
@@ -121,7 +121,7 @@ TEST(ChunkedFile, WriterRejectsBadChunkListsAndPaths) {
 TEST(ChunkedFile, ReaderRejectsForeignNewerOlderAndMissingFiles) {
     TempDir dir;
     auto path = dir / "k.opal";
-    writeChunkedFile(path, kKind, {});
+    writeChunkedFile(path, kChunkedKind, {});
     expectError([&] { ChunkedFileReader(path, {"SCAT", {1, 0}}); }, {"k.opal", "'TEST' file, expected 'SCAT'"});
     ChunkedFileReader(path, {"TEST", {1, 0}});  // newer minor: readable
     expectError([&] { ChunkedFileReader(path, {"TEST", {2, 0}}); }, {"k.opal", "format version 1.2 is older", "2.x"});
@@ -130,22 +130,22 @@ TEST(ChunkedFile, ReaderRejectsForeignNewerOlderAndMissingFiles) {
     test::putU16(file, 12, 2);  // major version
     test::resealHeader(file);
     test::writeBytes(path, file);
-    expectError([&] { ChunkedFileReader(path, kKind); }, {"k.opal", "format version 2.2 is newer", "1.x"});
+    expectError([&] { ChunkedFileReader(path, kChunkedKind); }, {"k.opal", "format version 2.2 is newer", "1.x"});
 
     test::writeBytes(dir / "text.opal", {std::byte('#'), std::byte('u'), std::byte('s'), std::byte('d'),
                                          std::byte('a'), std::byte(' '), std::byte('1'), std::byte('\n')});
-    expectError([&] { ChunkedFileReader(dir / "text.opal", kKind); }, {"text.opal", "not an Opal container"});
-    expectError([&] { ChunkedFileReader(dir / "absent.opal", kKind); }, {"absent.opal", "cannot open"});
+    expectError([&] { ChunkedFileReader(dir / "text.opal", kChunkedKind); }, {"text.opal", "not an Opal container"});
+    expectError([&] { ChunkedFileReader(dir / "absent.opal", kChunkedKind); }, {"absent.opal", "cannot open"});
 }
 
 TEST(ChunkedFile, ReaderRejectsDuplicateAndUnknownRequiredChunks) {
     TempDir dir;
     auto path = dir / "u.opal";
     std::vector<std::byte> a = pattern(10, 5, false);
-    writeChunkedFile(path, kKind, std::vector{bytesChunk("KNWN", ChunkCodec::Raw, a),
+    writeChunkedFile(path, kChunkedKind, std::vector{bytesChunk("KNWN", ChunkCodec::Raw, a),
                                               bytesChunk("OPTL", ChunkCodec::Raw, a, false),
                                               bytesChunk("NEWR", ChunkCodec::Zstd, a)});
-    ChunkedFileReader reader(path, kKind);
+    ChunkedFileReader reader(path, kChunkedKind);
     const ChunkTag known[] = {"KNWN"};
     expectError([&] { reader.rejectUnknownRequired(known); }, {"u.opal", "chunk 'NEWR'", "unknown chunk marked required"});
     const ChunkTag knownAndNew[] = {"KNWN", "NEWR"};
@@ -158,15 +158,15 @@ TEST(ChunkedFile, ReaderRejectsDuplicateAndUnknownRequiredChunks) {
     for (int i = 0; i < 4; ++i) file[table + 48 + i] = file[table + i];
     test::resealTable(file);
     test::writeBytes(path, file);
-    expectError([&] { ChunkedFileReader(path, kKind); }, {"u.opal", "chunk 'KNWN'", "twice"});
+    expectError([&] { ChunkedFileReader(path, kChunkedKind); }, {"u.opal", "chunk 'KNWN'", "twice"});
 }
 
 TEST(ChunkedFile, SourceRefusesOversizedCountsAndLeftoverBytes) {
     TempDir dir;
     auto path = dir / "s.opal";
     std::vector<std::byte> a = pattern(64, 6, false);
-    writeChunkedFile(path, kKind, std::vector{bytesChunk("DATA", ChunkCodec::Zstd, a)});
-    ChunkedFileReader reader(path, kKind);
+    writeChunkedFile(path, kChunkedKind, std::vector{bytesChunk("DATA", ChunkCodec::Zstd, a)});
+    ChunkedFileReader reader(path, kChunkedKind);
     ChunkSource source = reader.open("DATA");
     expectError([&] { source.readArray<float>(std::uint64_t(1) << 40, "values"); },
                 {"s.opal", "chunk 'DATA'", "values", "do not fit"});
@@ -178,13 +178,13 @@ TEST(ChunkedFile, TableEntriesMustTileTheFile) {
     TempDir dir;
     auto path = dir / "t.opal";
     std::vector<std::byte> a = pattern(32, 7, false), b = pattern(32, 8, false);
-    writeChunkedFile(path, kKind, std::vector{bytesChunk("AAAA", ChunkCodec::Raw, a), bytesChunk("BBBB", ChunkCodec::Raw, b)});
+    writeChunkedFile(path, kChunkedKind, std::vector{bytesChunk("AAAA", ChunkCodec::Raw, a), bytesChunk("BBBB", ChunkCodec::Raw, b)});
     std::vector<std::byte> file = test::readBytes(path);
     std::size_t table = test::getU64(file, 24);
     test::putU64(file, table + 48 + 8, 64);  // BBBB's offset onto AAAA's bytes
     test::resealTable(file);
     test::writeBytes(path, file);
-    expectError([&] { ChunkedFileReader(path, kKind); }, {"t.opal", "chunk 'BBBB'", "previous chunk ends"});
+    expectError([&] { ChunkedFileReader(path, kChunkedKind); }, {"t.opal", "chunk 'BBBB'", "previous chunk ends"});
 }
 
 }  // namespace

@@ -91,7 +91,7 @@ std::vector<float> randomIrradiance(std::size_t n, std::uint64_t seed) {
 }
 
 // Signed volume of a closed polygon mesh (bake/face_orientation.h, tested on its own).
-double enclosedVolume(const RenderMesh& mesh) {
+double renderMeshVolume(const RenderMesh& mesh) {
     return opal::enclosedVolume(mesh.points, mesh.faceVertexCounts, mesh.faceVertexIndices);
 }
 
@@ -361,7 +361,7 @@ std::pair<double, double> gridNeighbourDistance(const TranslucentAsset& a) {
 TEST_F(ExactCandle, SamplesCoverTheCandleLimitSurfaceWithOutwardNormals) {
     const RenderMesh fine = refinedFurther(makeCandle(), SubdivisionScheme::CatmullClark, 4);
     const double limitArea = test::renderMeshArea(fine);
-    const double limitVolume = enclosedVolume(fine);
+    const double limitVolume = renderMeshVolume(fine);
     ASSERT_GT(limitVolume, 0.0);
     // A 40 mm x 80 mm pillar: the limit surface is a little smaller than the cage.
     EXPECT_NEAR(limitArea, 2 * M_PI * 20 * 20 + 2 * M_PI * 20 * 78, 0.1 * limitArea);
@@ -406,7 +406,7 @@ TEST(BakePipeline, SphereSamplesAreaNormalsAndChartsAgainstClosedForms) {
     // Loop shrinks the icosphere a little: the limit is a near-sphere inside radius 25.
     EXPECT_LT(limitArea, 4 * M_PI * 25 * 25);
     EXPECT_GT(limitArea, 0.95 * 4 * M_PI * 25 * 25);
-    expectSamplesCoverTheLimitSurface(a, limitArea, enclosedVolume(fine), awayFrom(Imath::V3f(0.0f)));
+    expectSamplesCoverTheLimitSurface(a, limitArea, renderMeshVolume(fine), awayFrom(Imath::V3f(0.0f)));
     for (const SurfaceSample& s : a.samples) EXPECT_GT(s.normal.dot(s.position.normalized()), 0.99f);
 
     const auto [neighbour, shuffled] = gridNeighbourDistance(a);

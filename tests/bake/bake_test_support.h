@@ -82,6 +82,12 @@ inline std::string sidecarNamedBy(const std::filesystem::path& usda) {
     return name;
 }
 
+// The command line `a` followed by `b`.
+inline std::vector<std::string> with(std::vector<std::string> a, const std::vector<std::string>& b) {
+    a.insert(a.end(), b.begin(), b.end());
+    return a;
+}
+
 inline std::string joined(const std::vector<std::string>& words) {
     std::string out;
     for (const std::string& w : words) out += (out.empty() ? "" : " ") + w;

@@ -27,11 +27,6 @@ inline RunResult bakeWith(std::vector<std::string> args, const std::vector<std::
     return r;
 }
 
-inline std::vector<std::string> with(std::vector<std::string> a, const std::vector<std::string>& b) {
-    a.insert(a.end(), b.begin(), b.end());
-    return a;
-}
-
 // The plain bake of kFarmOptions into dir/candle.
 struct PlainBake {
     ScratchDir dir;

@@ -37,10 +37,7 @@ test::RunResult bake(const std::vector<std::string>& args) {
     return r;
 }
 
-std::vector<std::string> with(std::vector<std::string> a, const std::vector<std::string>& b) {
-    a.insert(a.end(), b.begin(), b.end());
-    return a;
-}
+using test::with;
 
 // ---- determinism --------------------------------------------------------------------
 

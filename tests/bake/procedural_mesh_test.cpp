@@ -71,7 +71,7 @@ std::vector<std::array<Imath::V3d, 3>> triangles(const Polygons& mesh) {
 }
 
 // Divergence theorem: positive for a closed surface wound counter-clockwise from outside.
-double enclosedVolume(const Polygons& mesh) {
+double polygonVolume(const Polygons& mesh) {
     double volume = 0.0;
     for (const auto& t : triangles(mesh)) volume += t[0].dot(t[1].cross(t[2])) / 6.0;
     return volume;
@@ -160,7 +160,7 @@ TEST(BuiltinCandle, ThePoolCentreLiesItsDepthBelowTheRimAndIsTheLowestPointOfThe
 TEST(BuiltinCandle, IsClosedConsistentlyWoundAndEnclosesThePillar) {
     const ControlMesh candle = makeCandle();
     expectClosedAndConsistentlyWound(polygonsOf(candle));
-    const double volume = enclosedVolume(polygonsOf(candle));
+    const double volume = polygonVolume(polygonsOf(candle));
     const double cylinder = std::numbers::pi * CandleSize::radius * CandleSize::radius;
     // Between a cylinder up to the pool's centre and one up to the rim.
     EXPECT_GT(volume, 0.95 * cylinder * CandleSize::poolCentre);
@@ -184,7 +184,7 @@ TEST(BuiltinCandle, CatmullClarkKeepsThePoolDepthAndTheRim) {
 TEST(BuiltinWick, IsClosedConsistentlyWoundAndStandsInThePool) {
     const ControlMesh wick = makeWick(), candle = makeCandle();
     expectClosedAndConsistentlyWound(polygonsOf(wick));
-    EXPECT_GT(enclosedVolume(polygonsOf(wick)), 0.0);
+    EXPECT_GT(polygonVolume(polygonsOf(wick)), 0.0);
     expectNothingToRepair(wick);
 
     const auto lowest = std::min_element(wick.positions.begin(), wick.positions.end(),

@@ -3,19 +3,19 @@
 #include "plugin/plugin_registry.h"
 
 #include "schema/error.h"
+#include "tests/plugin/fixture_plugins.h"
 #include "tests/plugin/temp_dir.h"
 
 #include <gtest/gtest.h>
-
-#include <dlfcn.h>
 
 namespace opal {
 namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path FixtureDir = OPAL_TEST_PLUGIN_DIR;
-const fs::path SupportedModule = FixtureDir / "opalTestRenderer" / "opalTestRenderer.so";
+using test::FixtureDir;
+using test::isLoaded;
+using test::SupportedModule;
 
 std::vector<std::string> typeNames(const PluginRegistry& registry) {
     std::vector<std::string> names;
@@ -38,12 +38,6 @@ std::string createError(const PluginRegistry& registry, const std::string& type)
         return e.what();
     }
     return "";
-}
-
-bool isLoaded(const fs::path& library) {
-    void* handle = dlopen(library.c_str(), RTLD_NOW | RTLD_NOLOAD);
-    if (handle) dlclose(handle);
-    return handle != nullptr;
 }
 
 TEST(PluginRegistry, DiscoversTheFixturePluginsThroughTheirGeneratedManifests) {

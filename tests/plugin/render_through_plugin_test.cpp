@@ -4,10 +4,9 @@
 #include "delegate/hd/render_index.h"
 #include "plugin/plugin_registry.h"
 #include "schema/error.h"
+#include "tests/plugin/fixture_plugins.h"
 
 #include <gtest/gtest.h>
-
-#include <dlfcn.h>
 
 #include <optional>
 
@@ -16,8 +15,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path FixtureDir = OPAL_TEST_PLUGIN_DIR;
-const fs::path SupportedModule = FixtureDir / "opalTestRenderer" / "opalTestRenderer.so";
+using test::FixtureDir;
+using test::isLoaded;
+using test::SupportedModule;
 
 // A scene with one camera, as a scene source would describe it.
 class CameraOnlyScene : public hd::SceneDelegate {
@@ -34,12 +34,6 @@ public:
         return camera;
     }
 };
-
-bool isLoaded(const fs::path& library) {
-    void* handle = dlopen(library.c_str(), RTLD_NOW | RTLD_NOLOAD);
-    if (handle) dlclose(handle);
-    return handle != nullptr;
-}
 
 std::string callLog(const hd::RenderDelegate& delegate) {
     return std::get<std::string>(delegate.renderSetting("opal:test:callLog"));

@@ -7,6 +7,7 @@
 #include "schema/scatter/blackbody.h"
 #include "schema/scatter/dipole.h"
 #include "schema/scatter/fresnel_moments.h"
+#include "tests/relight/translation.h"
 
 #include <gtest/gtest.h>
 
@@ -16,7 +17,6 @@
 namespace opal {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 PlacedSamples oneSample(const Imath::V3f& position, const Imath::V3f& normal) {
     PlacedSamples s;
@@ -25,11 +25,7 @@ PlacedSamples oneSample(const Imath::V3f& position, const Imath::V3f& normal) {
     return s;
 }
 
-Imath::M44d translation(double x, double y, double z) {
-    Imath::M44d m;
-    m.setTranslation(Imath::V3d(x, y, z));
-    return m;
-}
+using test::translation;
 
 // E at one sample, exact F_t and through the moments (2 terms, response over [1.2, 1.6]).
 struct Irradiance {
@@ -62,7 +58,7 @@ TEST(AnalyticLight, PointLightFollowsInverseSquareAndCosineLaws) {
     const AnalyticLight light = AnalyticLight::fromDesc(desc);
     const PlacedSamples sample = oneSample({0, 0, 0}, {0, 1, 0});
     const double d2 = 1.0 + 4.0 + 0.25, mu = 2.0 / std::sqrt(d2);
-    const Rgb intensity = desc.color * (kPi * 3.0 * 2.0);  // I = pi color intensity 2^exposure
+    const Rgb intensity = desc.color * (std::numbers::pi * 3.0 * 2.0);  // I = pi color intensity 2^exposure
     for (double eta : {1.2, 1.4, 1.6}) {
         const Irradiance e = irradianceAt(light, sample, eta);
         const Rgb expected = intensity * (mu * fresnelTransmittance(eta, mu) / d2);  // I cos F_t / d^2
@@ -84,10 +80,10 @@ TEST(AnalyticLight, SphereLightIsAPointOfIntensityRadianceTimesCrossSection) {
     scaled.setScale(2.0);  // world radius 1
     desc.transform = scaled * translation(0.0, 3.0, 0.0);
     const PlacedSamples below = oneSample({0, 0, 0}, {0, 1, 0});
-    const Rgb expected = Rgb(1.0) * (2.0 * kPi * 1.0 / 9.0 * fresnelTransmittance(1.3, 1.0));  // L_e pi r^2 / d^2
+    const Rgb expected = Rgb(1.0) * (2.0 * std::numbers::pi * 1.0 / 9.0 * fresnelTransmittance(1.3, 1.0));  // L_e pi r^2 / d^2
     expectRgbNear(irradianceAt(AnalyticLight::fromDesc(desc), below, 1.3).exact, expected, 1e-6);
     desc.normalize = true;  // divided by the area 4 pi r^2
-    expectRgbNear(irradianceAt(AnalyticLight::fromDesc(desc), below, 1.3).exact, expected / (4.0 * kPi), 1e-6);
+    expectRgbNear(irradianceAt(AnalyticLight::fromDesc(desc), below, 1.3).exact, expected / (4.0 * std::numbers::pi), 1e-6);
     // Inside the sphere, and facing away: nothing.
     EXPECT_EQ(irradianceAt(AnalyticLight::fromDesc(desc), oneSample({0, 2.5f, 0}, {0, 1, 0}), 1.3).exact.x, 0.0f);
     EXPECT_EQ(irradianceAt(AnalyticLight::fromDesc(desc), oneSample({0, 0, 0}, {0, -1, 0}), 1.3).exact.x, 0.0f);
@@ -103,9 +99,9 @@ TEST(AnalyticLight, SpotConeFollowsUsdLuxSmoothstep) {
     desc.transform = Imath::M44d(1, 0, 0, 0, 0, 0, -1, 0, 0, 1, 0, 0, 0, 2, 0, 1);
     const AnalyticLight light = AnalyticLight::fromDesc(desc);
     const auto shaped = [&](double offAxisDegrees) {
-        const double x = 2.0 * std::tan(offAxisDegrees * kPi / 180.0), d2 = x * x + 4.0, mu = 2.0 / std::sqrt(d2);
+        const double x = 2.0 * std::tan(offAxisDegrees * std::numbers::pi / 180.0), d2 = x * x + 4.0, mu = 2.0 / std::sqrt(d2);
         const Irradiance e = irradianceAt(light, oneSample({float(x), 0, 0}, {0, 1, 0}), 1.3);
-        return e.exact.x / (kPi * mu * fresnelTransmittance(1.3, mu) / d2);
+        return e.exact.x / (std::numbers::pi * mu * fresnelTransmittance(1.3, mu) / d2);
     };
     EXPECT_NEAR(shaped(0.0), 1.0, 1e-5);
     EXPECT_NEAR(shaped(10.0), 1.0, 1e-5);
@@ -121,7 +117,7 @@ TEST(AnalyticLight, DistantLightIntegratesItsDiskUnlessNormalized) {
     desc.intensity = 50000.0;
     desc.angle = 0.53;
     const PlacedSamples facing = oneSample({0, 0, 0}, {0, 0, 1});  // the light shines along -Z
-    const double solidAngle = 2.0 * kPi * (1.0 - std::cos(0.5 * 0.53 * kPi / 180.0));
+    const double solidAngle = 2.0 * std::numbers::pi * (1.0 - std::cos(0.5 * 0.53 * std::numbers::pi / 180.0));
     const double ft = fresnelTransmittance(1.3, 1.0);
     expectRgbNear(irradianceAt(AnalyticLight::fromDesc(desc), facing, 1.3).exact, Rgb(50000.0 * solidAngle * ft), 1e-6);
     desc.normalize = true;

@@ -14,7 +14,6 @@
 namespace opal {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 void expectDirection(const Imath::V3d& d, const Imath::V3d& expected) {
     EXPECT_NEAR((d - expected).length(), 0.0, 1e-12) << d << " vs " << expected;
@@ -78,7 +77,7 @@ std::shared_ptr<TranslucentAsset> hemisphereAsset(std::uint32_t faceSize, std::u
 
 Imath::M44d rotationY(double degrees) {
     Imath::M44d m;
-    m.setAxisAngle(Imath::V3d(0, 1, 0), degrees * kPi / 180.0);
+    m.setAxisAngle(Imath::V3d(0, 1, 0), degrees * std::numbers::pi / 180.0);
     return m;
 }
 
@@ -95,13 +94,13 @@ TEST(EnvironmentLight, LinearSkyGivesClosedFormMoments) {
     desc.exposure = 1.0;  // scale 1
     // The mesh as is (normal +Y) and turned by -90 degrees about X (normal along Z).
     Imath::M44d toMinusZ;
-    toMinusZ.setAxisAngle(Imath::V3d(1, 0, 0), -kPi / 2);
+    toMinusZ.setAxisAngle(Imath::V3d(1, 0, 0), -std::numbers::pi / 2);
     for (const Imath::M44d& meshTransform : {Imath::M44d(), toMinusZ}) {
         Imath::V3d n;
         meshTransform.multDirMatrix(Imath::V3d(0, 1, 0), n);
         MeshIrradiance irradiance(asset, meshTransform);
         irradiance.setLight("/dome", std::make_shared<EnvironmentLight>(EnvironmentLight::fromDesc(map, desc)));
-        const double e0 = kPi * a + 2.0 * kPi / 3.0 * b.dot(n), e1 = kPi / 3.0 * (a + b.dot(n));
+        const double e0 = std::numbers::pi * a + 2.0 * std::numbers::pi / 3.0 * b.dot(n), e1 = std::numbers::pi / 3.0 * (a + b.dot(n));
         for (std::uint32_t i = 0; i < asset->samples.size(); ++i) {
             EXPECT_NEAR(irradiance.moments().sample(i)[0], e0, 0.005 * e0) << "normal " << n;
             EXPECT_NEAR(irradiance.moments().sample(i)[3], e1, 0.01 * e1) << "normal " << n;

@@ -21,7 +21,6 @@
 namespace opal {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 // 2 pi integral_0^1 F_t(eta, mu) mu dmu by the midpoint rule, with the textbook Fresnel
 // reflectance in angles (independent of the one under test, which works in cosines):
@@ -40,7 +39,7 @@ double hemisphereTransmittance(double eta) {
         }
         sum += t * mu / n;
     }
-    return 2.0 * kPi * sum;
+    return 2.0 * std::numbers::pi * sum;
 }
 
 const Imath::V3f kSky(0.5f, 1.0f, 2.0f);
@@ -74,7 +73,7 @@ std::shared_ptr<const EnvironmentLight> structuredDome() {
 std::shared_ptr<TranslucentAsset> torusAsset(int major, int minor, float R, float r) {
     auto asset = std::make_shared<TranslucentAsset>();
     const auto point = [&](int i, int j) {
-        const double phi = 2.0 * kPi * i / major, theta = 2.0 * kPi * j / minor;
+        const double phi = 2.0 * std::numbers::pi * i / major, theta = 2.0 * std::numbers::pi * j / minor;
         return Imath::V3f(float((R + r * std::cos(theta)) * std::cos(phi)), float(r * std::sin(theta)),
                           float((R + r * std::cos(theta)) * std::sin(phi)));
     };

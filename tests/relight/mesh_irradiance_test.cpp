@@ -4,6 +4,7 @@
 #include "delegate/relight/relight_engine.h"
 #include "schema/error.h"
 #include "synthetic_asset.h"
+#include "tests/relight/translation.h"
 
 #include <gtest/gtest.h>
 
@@ -12,13 +13,8 @@
 namespace opal {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
-Imath::M44d translation(double x, double y, double z) {
-    Imath::M44d m;
-    m.setTranslation(Imath::V3d(x, y, z));
-    return m;
-}
+using test::translation;
 
 hd::LightDesc pointLight(const Imath::V3d& at, double intensity) {
     hd::LightDesc d;
@@ -164,7 +160,7 @@ TEST(MeshIrradiance, ExactIrradianceUsesTheExactFresnelFactor) {
         const double d = 20.0 - scene.asset->samples[top].position.y;
         const double mu = scene.asset->samples[top].normal.dot(
             (Imath::V3f(0, 20, 0) - scene.asset->samples[top].position).normalized());
-        EXPECT_NEAR(exact[3 * top], kPi * 400.0 * mu * fresnelTransmittance(eta, mu) /
+        EXPECT_NEAR(exact[3 * top], std::numbers::pi * 400.0 * mu * fresnelTransmittance(eta, mu) /
                                         (Imath::V3f(0, 20, 0) - scene.asset->samples[top].position).length2(),
                     1e-4 * exact[3 * top])
             << d;

@@ -1,6 +1,7 @@
 #include "raytrace/ray_scene.h"
 
 #include "schema/error.h"
+#include "tests/relight/translation.h"
 
 #include <gtest/gtest.h>
 
@@ -21,11 +22,7 @@ RenderMesh unitQuad() {
     return mesh;
 }
 
-Imath::M44d translation(double x, double y, double z) {
-    Imath::M44d m;
-    m.setTranslation(Imath::V3d(x, y, z));
-    return m;
-}
+using test::translation;
 
 TEST(RayScene, ClosestHitGivesPrimTriangleBarycentricsAndDistance) {
     RayScene scene;

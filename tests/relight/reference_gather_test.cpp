@@ -16,7 +16,6 @@
 namespace opal {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 TEST(ReferenceGather, SumsTheDipoleOverSamplesInMillimetres) {
     TranslucentAsset asset;
@@ -29,10 +28,10 @@ TEST(ReferenceGather, SumsTheDipoleOverSamplesInMillimetres) {
     for (int c = 0; c < 3; ++c) {
         const double a0 = 0.3 * 4.0, a1 = 0.2 * 4.0;  // mm^2
         // Each sample's own light is gathered over its own disk (radius sqrt(A / pi)).
-        const double self0 = dipoleDiskReflectance(std::sqrt(a0 / kPi), m.channel(c));
-        const double self1 = dipoleDiskReflectance(std::sqrt(a1 / kPi), m.channel(c));
-        const double expected0 = (self0 * e[c] + dipoleProfile(3.0, m.channel(c)) * a1 * e[3 + c]) / kPi;
-        const double expected1 = (dipoleProfile(3.0, m.channel(c)) * a0 * e[c] + self1 * e[3 + c]) / kPi;
+        const double self0 = dipoleDiskReflectance(std::sqrt(a0 / std::numbers::pi), m.channel(c));
+        const double self1 = dipoleDiskReflectance(std::sqrt(a1 / std::numbers::pi), m.channel(c));
+        const double expected0 = (self0 * e[c] + dipoleProfile(3.0, m.channel(c)) * a1 * e[3 + c]) / std::numbers::pi;
+        const double expected1 = (dipoleProfile(3.0, m.channel(c)) * a0 * e[c] + self1 * e[3 + c]) / std::numbers::pi;
         EXPECT_NEAR(l[c], expected0, 1e-6 * expected0);
         EXPECT_NEAR(l[3 + c], expected1, 1e-6 * expected1);
     }
@@ -70,7 +69,7 @@ double skyIrradiance(double eta) {
         const double mu = (q + 0.5) / 20000.0;
         sum += fresnelTransmittance(eta, mu) * mu / 20000.0;
     }
-    return 2.0 * kPi * sum;
+    return 2.0 * std::numbers::pi * sum;
 }
 
 // A slab under a uniform unit dome that each sample sees over its whole upper hemisphere.
@@ -117,7 +116,7 @@ TEST(ReferenceGather, WhiteFurnaceMatchesTotalDiffuseReflectance) {
     const std::vector<float> l = referenceGather(*slab, m, e, centre);
     for (int c = 0; c < 3; ++c) {
         const double alphaPrime = m.sigmaSPrime[c] / (m.sigmaSPrime[c] + m.sigmaA[c]);
-        const double expected = dipoleTotalReflectance(alphaPrime, m.eta) * sky / kPi;  // (1/pi) R_d,total E
+        const double expected = dipoleTotalReflectance(alphaPrime, m.eta) * sky / std::numbers::pi;  // (1/pi) R_d,total E
         for (std::size_t j = 0; j < centre.size(); ++j) {
             EXPECT_NEAR(l[3 * j + c], expected, 0.02 * expected) << "channel " << c;
             if (j == 0)
@@ -142,7 +141,7 @@ TEST(ReferenceGather, WhiteFurnaceThroughThePcaEngine) {
     const double sky = skyIrradiance(m.eta);
     for (int c = 0; c < 3; ++c) {
         const double alphaPrime = m.sigmaSPrime[c] / (m.sigmaSPrime[c] + m.sigmaA[c]);
-        const double expected = dipoleTotalReflectance(alphaPrime, m.eta) * sky / kPi;
+        const double expected = dipoleTotalReflectance(alphaPrime, m.eta) * sky / std::numbers::pi;
         for (std::size_t j = 0; j < centre.size(); ++j) {
             const float pca = engine.sampleRadiance()[3 * centre[j] + c];
             EXPECT_NEAR(pca, reference[3 * j + c], 0.01 * reference[3 * j + c]) << "channel " << c;

@@ -16,7 +16,7 @@
 namespace opal {
 namespace {
 
-constexpr int W = 96, H = 64;
+constexpr int DomeWidth = 96, DomeHeight = 64;
 const hd::SdfPath SkyPath = "/World/Sky";
 
 // 2 pi integral_0^1 F_t(eta, mu) mu dmu: what a uniform unit sky gives an unoccluded surface.
@@ -40,7 +40,7 @@ struct DomeScene {
         test::addLight(scene, index, SkyPath, dome);
         index.sync();
     }
-    test::Aovs render() { return test::renderAovs(delegate, index, test::CameraPath, W, H); }
+    test::Aovs render() { return test::renderAovs(delegate, index, test::CameraPath, DomeWidth, DomeHeight); }
 };
 
 hd::LightDesc uniformDome(Rgb color) {
@@ -58,13 +58,13 @@ TEST(Dome, AUniformDomeIsTheBackgroundAndLightsTheSphereEvenly) {
     const double expectedE = skyIrradiance(eta);
     // The camera sits at (0, 0, 30) looking down -Z.
     const auto viewDirection = [](int x, int y) {
-        const double sx = (2.0 * (x + 0.5) / W - 1.0) * 0.36, sy = (1.0 - 2.0 * (y + 0.5) / H) * 0.24;
+        const double sx = (2.0 * (x + 0.5) / DomeWidth - 1.0) * 0.36, sy = (1.0 - 2.0 * (y + 0.5) / DomeHeight) * 0.24;
         return Imath::V3d(sx, sy, -1.0).normalized();
     };
     double minRatio = 1e30, maxRatio = 0.0, minRaw = 1e30, maxRaw = 0.0;
     int hits = 0;
-    for (int y = 0; y < H; ++y)
-        for (int x = 0; x < W; ++x) {
+    for (int y = 0; y < DomeHeight; ++y)
+        for (int x = 0; x < DomeWidth; ++x) {
             EXPECT_EQ(a.at("alpha", x, y)[0], 1.0f);  // the dome covers what the sphere does not
             EXPECT_EQ(a.at("color", x, y)[3], 1.0f);
             if (test::background(a, x, y)) {
@@ -90,9 +90,9 @@ TEST(Dome, AUniformDomeIsTheBackgroundAndLightsTheSphereEvenly) {
     EXPECT_LT(maxRatio / minRatio - 1.0, 0.4 * (maxRaw / minRaw - 1.0));
     EXPECT_LT(maxRatio / minRatio, 1.08);
     // The specular layer reflects the dome: F_r(eta, n.w_o) x sky radiance.
-    const float* centre = a.at("specular", W / 2, H / 2);
-    const float* normal = a.at("normal", W / 2, H / 2);
-    const double fr = 1.0 - fresnelTransmittance(eta, -Imath::V3d(normal[0], normal[1], normal[2]).dot(viewDirection(W / 2, H / 2)));
+    const float* centre = a.at("specular", DomeWidth / 2, DomeHeight / 2);
+    const float* normal = a.at("normal", DomeWidth / 2, DomeHeight / 2);
+    const double fr = 1.0 - fresnelTransmittance(eta, -Imath::V3d(normal[0], normal[1], normal[2]).dot(viewDirection(DomeWidth / 2, DomeHeight / 2)));
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(centre[c], fr * sky[c], 1e-5);
 }
 
@@ -115,10 +115,10 @@ TEST(Dome, ReferenceModeIntegratesTheDomeInsteadOfTheBakedVectors) {
     const double expectedE = skyIrradiance(blind->defaultMaterial.eta);
     for (bool reference : {false, true}) {
         delegate.setRenderSetting("opal:reference", reference);
-        const test::Aovs a = test::renderAovs(delegate, index, test::CameraPath, W, H);
+        const test::Aovs a = test::renderAovs(delegate, index, test::CameraPath, DomeWidth, DomeHeight);
         int hits = 0;
-        for (int y = 0; y < H; ++y)
-            for (int x = 0; x < W; ++x) {
+        for (int y = 0; y < DomeHeight; ++y)
+            for (int x = 0; x < DomeWidth; ++x) {
                 if (!test::interior(a, x, y)) continue;
                 ++hits;
                 for (int c = 0; c < 3; ++c) {
@@ -140,8 +140,8 @@ TEST(Dome, TheBackgroundCanBeTransparentOrHidden) {
     const test::Aovs i = invisible.render();
     DomeScene visible(uniformDome({1.0, 1.0, 1.0}));
     const test::Aovs v = visible.render();
-    for (int y = 0; y < H; ++y)
-        for (int x = 0; x < W; ++x)
+    for (int y = 0; y < DomeHeight; ++y)
+        for (int x = 0; x < DomeWidth; ++x)
             for (const test::Aovs* a : {&t, &i}) {
                 if (test::interior(*a, x, y)) {
                     EXPECT_EQ(a->at("alpha", x, y)[0], 1.0f);

@@ -20,7 +20,7 @@
 namespace opal {
 namespace {
 
-constexpr int W = 96, H = 64;
+constexpr int FrameWidth = 96, FrameHeight = 64;
 constexpr double kCameraDistance = 30.0;
 constexpr double kEdgeDegrees = 15.0;  // from the image's vertical
 
@@ -39,7 +39,7 @@ Imath::M44d squareTransform() {
 // (36 x 24 film, 50 mm lens) at z = 30 shows 0.72 x 0.48 of the plane at unit distance.
 Imath::V2d project(const Imath::V3d& p) {
     const double depth = kCameraDistance - p.z;
-    return {(p.x / depth / 0.36 + 1.0) * W / 2.0, (1.0 - p.y / depth / 0.24) * H / 2.0};
+    return {(p.x / depth / 0.36 + 1.0) * FrameWidth / 2.0, (1.0 - p.y / depth / 0.24) * FrameHeight / 2.0};
 }
 
 // The half-plane the square covers on the image: n.q < c.
@@ -110,7 +110,7 @@ struct SquareScene {
         test::addCamera(scene, index);
         index.sync();
     }
-    test::Aovs render() { return test::renderAovs(delegate, index, test::CameraPath, W, H); }
+    test::Aovs render() { return test::renderAovs(delegate, index, test::CameraPath, FrameWidth, FrameHeight); }
 };
 
 TEST(Progressive, AnObliqueEdgeConvergesToItsCoverage) {
@@ -119,8 +119,8 @@ TEST(Progressive, AnObliqueEdgeConvergesToItsCoverage) {
     const HalfPlane edge = squareOnImage();
     int edgePixels = 0, fractional = 0;
     double worst = 0.0;
-    for (int y = 0; y < H; ++y)
-        for (int x = 0; x < W; ++x) {
+    for (int y = 0; y < FrameHeight; ++y)
+        for (int x = 0; x < FrameWidth; ++x) {
             const double area = coveredArea(edge, x, y);
             const float alpha = a.at("alpha", x, y)[0];
             EXPECT_NEAR(alpha, area, 1.0 / 16.0 + 0.02) << "pixel " << x << ", " << y;
@@ -131,8 +131,8 @@ TEST(Progressive, AnObliqueEdgeConvergesToItsCoverage) {
                 fractional += alpha > 0.0f && alpha < 1.0f;
             }
         }
-    EXPECT_GT(edgePixels, H);  // the edge crosses every row, some rows twice
-    EXPECT_GT(fractional, H / 2);  // anti-aliased: partly covered pixels have fractional alpha
+    EXPECT_GT(edgePixels, FrameHeight);  // the edge crosses every row, some rows twice
+    EXPECT_GT(fractional, FrameHeight / 2);  // anti-aliased: partly covered pixels have fractional alpha
     std::printf("oblique edge (%g degrees): %d edge pixels, worst |alpha - area| %.4f\n", kEdgeDegrees, edgePixels,
                 worst);
 }
@@ -143,8 +143,8 @@ TEST(Progressive, BlackmanHarrisWeighsTheSamplesByTheirPlaceInThePixel) {
     const HalfPlane edge = squareOnImage();
     double errorSum = 0.0, boxErrorSum = 0.0;
     int edgePixels = 0;
-    for (int y = 0; y < H; ++y)
-        for (int x = 0; x < W; ++x) {
+    for (int y = 0; y < FrameHeight; ++y)
+        for (int x = 0; x < FrameWidth; ++x) {
             const double area = coveredArea(edge, x, y);
             if (area == 0.0 || area == 1.0) {
                 EXPECT_EQ(a.at("alpha", x, y)[0], float(area));

@@ -17,8 +17,7 @@
 namespace opal {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-const double kOutside[] = {3.9, 10.0, kNaN, 0.5};
+const double kOutside[] = {3.9, 10.0, std::numeric_limits<double>::quiet_NaN(), 0.5};
 
 // "eta = 3.9" as the error writes it (the default stream format).
 std::string shown(double eta) {

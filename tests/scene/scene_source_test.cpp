@@ -133,11 +133,6 @@ def RenderSettings "Settings"
 }
 )";
 
-Imath::V3d apply(const Imath::V3d& p, const Imath::M44d& m) {
-    Imath::V3d out;
-    m.multVecMatrix(p, out);
-    return out;
-}
 
 void expectNear(const Imath::V3d& a, const Imath::V3d& b) {
     EXPECT_NEAR(a.x, b.x, 1e-9);
@@ -178,8 +173,8 @@ TEST_F(SmallSceneTest, MeshesShareOneLoadedAsset) {
 
 TEST_F(SmallSceneTest, MeshTransformsComposeWithTheParent) {
     // rotateY 90 in the candle, then the world's translate (10, 0, 0): (1,0,0) -> (0,0,-1) -> (10,0,-1).
-    expectNear(apply({1, 0, 0}, scene.meshes.at("/World/Candle").desc.transform), {10, 0, -1});
-    expectNear(apply({1, 2, 3}, scene.meshes.at("/World/Shelf/Second").desc.transform), {11, 2, 3});
+    expectNear(Imath::V3d(1, 0, 0) * scene.meshes.at("/World/Candle").desc.transform, {10, 0, -1});
+    expectNear(Imath::V3d(1, 2, 3) * scene.meshes.at("/World/Shelf/Second").desc.transform, {11, 2, 3});
 }
 
 TEST_F(SmallSceneTest, BindingsAndVisibilityInherit) {
@@ -229,7 +224,7 @@ TEST_F(SmallSceneTest, SphereLightParameters) {
     EXPECT_TRUE(flame.desc.treatAsPoint);
     EXPECT_EQ(flame.desc.shapingConeAngle, 45.0);
     EXPECT_DOUBLE_EQ(flame.desc.shapingConeSoftness, 0.5);
-    expectNear(apply({0, 0, 0}, flame.desc.transform), {0, 20, 0});
+    expectNear(Imath::V3d(0, 0, 0) * flame.desc.transform, {0, 20, 0});
 }
 
 TEST_F(SmallSceneTest, DistantLightFallsBackToUsdLuxIntensity) {
@@ -258,7 +253,7 @@ TEST_F(SmallSceneTest, Camera) {
     EXPECT_DOUBLE_EQ(camera.verticalAperture, 24);
     EXPECT_DOUBLE_EQ(camera.nearClip, 0.5);
     EXPECT_DOUBLE_EQ(camera.farClip, 500);
-    expectNear(apply({0, 0, 0}, camera.transform), {0, 0, 40});
+    expectNear(Imath::V3d(0, 0, 0) * camera.transform, {0, 0, 40});
 }
 
 TEST_F(SmallSceneTest, RenderSettingsAndSetup) {
@@ -602,15 +597,15 @@ TEST(SceneSource, TimeSampledLightsCamerasAndXformsFollowTheSceneTime) {
     const auto& key = static_cast<const PullingPrim<hd::LightDesc>&>(*index.sprim("/Key"));
     EXPECT_DOUBLE_EQ(key.desc.intensity, 15.0);              // 10 + (30 - 10) * 12 / 48
     expectRgb(key.desc.color, Rgb(1.0, 0.5, 0.0));           // one sample: held everywhere
-    expectNear(apply({0, 0, 0}, key.desc.transform), {12, -6, 0});
+    expectNear(Imath::V3d(0, 0, 0) * key.desc.transform, {12, -6, 0});
     const auto& camera = static_cast<const PullingPrim<hd::CameraDesc>&>(*index.sprim("/Rig/Camera"));
     const double a = 45.0 * M_PI / 180.0;                    // rotateY 45 at time code 12
-    expectNear(apply({0, 0, 0}, camera.desc.transform), {40 * std::sin(a), 0, 40 * std::cos(a)});
+    expectNear(Imath::V3d(0, 0, 0) * camera.desc.transform, {40 * std::sin(a), 0, 40 * std::cos(a)});
     EXPECT_DOUBLE_EQ(source.scene().materials.at("/Wax").desc.specularRoughness, 0.5);
 
     source.setTime(10.0, index, assets);  // time code 240: held at the last samples
     EXPECT_DOUBLE_EQ(source.light("/Key").intensity, 30.0);
-    expectNear(apply({0, 0, 0}, source.light("/Key").transform), {24, -12, 0});
+    expectNear(Imath::V3d(0, 0, 0) * source.light("/Key").transform, {24, -12, 0});
 }
 
 TEST(SceneSource, AnimationOutsideLightsCamerasAndXformsIsRefusedWithItsLocation) {

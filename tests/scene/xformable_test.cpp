@@ -19,11 +19,6 @@ void expectMatrix(const Imath::M44d& actual, const Rows& expected) {
         for (int c = 0; c < 4; ++c) EXPECT_NEAR(actual[r][c], expected[r][c], 1e-12) << "row " << r << ", column " << c;
 }
 
-Imath::V3d apply(const Imath::V3d& p, const Imath::M44d& m) {
-    Imath::V3d out;
-    m.multVecMatrix(p, out);
-    return out;
-}
 
 void expectPoint(const Imath::V3d& actual, const Imath::V3d& expected) {
     EXPECT_NEAR(actual.x, expected.x, 1e-12);
@@ -58,7 +53,7 @@ TEST(Xformable, OrderListsOpsOutermostFirst) {
         "    float3 xformOp:scale = (2, 2, 2)\n"
         "    uniform token[] xformOpOrder = [\"xformOp:translate\", \"xformOp:rotateZ\", \"xformOp:scale\"]\n");
     expectMatrix(local.matrix, {{{0, 2, 0, 0}, {-2, 0, 0, 0}, {0, 0, 2, 0}, {1, 2, 3, 1}}});
-    expectPoint(apply({1, 0, 0}, local.matrix), {1, 4, 3});
+    expectPoint(Imath::V3d(1, 0, 0) * local.matrix, {1, 4, 3});
     EXPECT_FALSE(local.resetsXformStack);
 }
 
@@ -70,7 +65,7 @@ TEST(Xformable, ReversedOrderMovesFirst) {
         "    float3 xformOp:scale = (2, 2, 2)\n"
         "    uniform token[] xformOpOrder = [\"xformOp:scale\", \"xformOp:rotateZ\", \"xformOp:translate\"]\n");
     // (1, 0, 0) -> (2, 2, 3) -> (-2, 2, 3) -> (-4, 4, 6).
-    expectPoint(apply({1, 0, 0}, local.matrix), {-4, 4, 6});
+    expectPoint(Imath::V3d(1, 0, 0) * local.matrix, {-4, 4, 6});
 }
 
 TEST(Xformable, TransformOpIsTheMatrixAsWritten) {
@@ -86,8 +81,8 @@ TEST(Xformable, InvertedPivotRotatesAboutThePivot) {
         "    float xformOp:rotateY = 90\n"
         "    uniform token[] xformOpOrder = [\"xformOp:translate:pivot\", \"xformOp:rotateY\", "
         "\"!invert!xformOp:translate:pivot\"]\n");
-    expectPoint(apply({1, 0, 0}, local.matrix), {1, 0, 0});   // the pivot stays
-    expectPoint(apply({2, 0, 0}, local.matrix), {1, 0, -1});  // (1,0,0) about it -> (0,0,-1)
+    expectPoint(Imath::V3d(1, 0, 0) * local.matrix, {1, 0, 0});   // the pivot stays
+    expectPoint(Imath::V3d(2, 0, 0) * local.matrix, {1, 0, -1});  // (1,0,0) about it -> (0,0,-1)
 }
 
 TEST(Xformable, ResetXformStackIsReported) {
@@ -95,7 +90,7 @@ TEST(Xformable, ResetXformStackIsReported) {
         "    double3 xformOp:translate = (1, 0, 0)\n"
         "    uniform token[] xformOpOrder = [\"!resetXformStack!\", \"xformOp:translate\"]\n");
     EXPECT_TRUE(local.resetsXformStack);
-    expectPoint(apply({0, 0, 0}, local.matrix), {1, 0, 0});
+    expectPoint(Imath::V3d(0, 0, 0) * local.matrix, {1, 0, 0});
 }
 
 TEST(Xformable, NoOrderIsIdentity) { expectMatrix(localOf("").matrix, {{{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}}}); }

@@ -8,7 +8,6 @@
 namespace opal::test {
 namespace {
 
-std::string saveExr(const SceneDir& dir, const std::string& name) { return "save exr " + scriptWord(dir / name) + "\n"; }
 
 TEST(EditHistory, UndoGivesBackThePictureBeforeTheEditAndRedoTheEditedOne) {
     const SceneDir dir;

@@ -25,7 +25,6 @@ void writeHalfBrightSky(const std::filesystem::path& file) {
     out->close();
 }
 
-std::string saveExr(const SceneDir& dir, const std::string& name) { return "save exr " + scriptWord(dir / name) + "\n"; }
 
 TEST(Environment, TurningTheDomeRelightsTheAssetAsTheSavedSceneRendersIt) {
     const SceneDir dir;

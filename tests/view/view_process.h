@@ -33,6 +33,9 @@ inline std::string slurpFile(const std::filesystem::path& file) {
 inline std::string shellWord(const std::filesystem::path& path) { return "'" + path.string() + "'"; }
 inline std::string scriptWord(const std::filesystem::path& path) { return "\"" + path.string() + "\""; }
 
+// The script line that saves the EXR dir/name.
+inline std::string saveExr(const SceneDir& dir, const std::string& name) { return "save exr " + scriptWord(dir / name) + "\n"; }
+
 // EXECUTABLE ARGUMENTS, output captured in `dir`.
 // `environment`: assignments put before the command ("NAME=VALUE ").
 inline ViewRun runProgram(const char* executable, const SceneDir& dir, const std::string& arguments,

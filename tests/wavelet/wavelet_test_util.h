@@ -15,6 +15,10 @@
 
 namespace opal::test {
 
+// Round-trip tolerance of a transform computed in float or double.
+constexpr double tolerance(float) { return 1e-6; }
+constexpr double tolerance(double) { return 1e-13; }
+
 template <typename T>
 std::vector<T> randomValues(std::size_t count, std::uint32_t seed) {
     std::mt19937 rng(seed);
