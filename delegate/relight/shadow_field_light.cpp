@@ -116,36 +116,58 @@ struct ShadowFieldLight::Texels {
     Imath::V3d direction{0.0};
 };
 
-// A worker's buffers for arrivalInField, all zero (and `touched` empty) between samples.
+// A worker's buffers for arrivalInField, all zero between samples. Touched texels and
+// blocks are listed without a branch (the index is always written, the count advances
+// only for a first touch): the seen-test mispredicts on most of a sample's ~1,200 terms.
 struct ShadowFieldLight::Scratch {
     std::vector<Imath::V3f> radiance;  // per texel of the decode layout
-    std::vector<std::uint8_t> seen;
-    std::vector<std::uint32_t> touched;
+    std::vector<std::uint8_t> seen, blockSeen;
+    // The first `count` entries are live; one spare slot takes the write after the last.
+    std::vector<std::uint32_t> touched, touchedBlocks;
     std::vector<Texels> blocks;
 
     explicit Scratch(const LoadedShadowField& f)
-        : radiance(f.layout.texels(), Imath::V3f(0.0f)), seen(f.layout.texels(), 0), blocks(f.blocks) {}
+        : radiance(f.layout.texels(), Imath::V3f(0.0f)),
+          seen(f.layout.texels(), 0),
+          blockSeen(f.blocks, 0),
+          touched(f.layout.texels() + 1),
+          touchedBlocks(f.blocks + 1),
+          blocks(f.blocks) {}
 };
 
-// The stencil's weighted sum of the sparse maps (the interpolated field, incidentRadiance's
-// value up to rounding), clamped, weighed by each texel's cosine integral and gathered into
-// visibility blocks; then one occlusion ray per lit block.
-LightArrival ShadowFieldLight::arrivalInField(const Imath::V3d& x, const Imath::V3d& n, const RayScene* scene,
-                                              float offset, Scratch& s) const {
-    const Imath::V3d p = toLight(x), nl = n * rotation_.transposed();
-    const FieldStencil stencil = field_->lookup.stencil(p);
+// Sums the stencil's weighted sparse maps into s.radiance: the interpolated field,
+// incidentRadiance's value up to rounding. Returns how many texels it touched.
+std::size_t ShadowFieldLight::interpolateMaps(const FieldStencil& stencil, Scratch& s) const {
+    // Raw pointers: a byte store may alias a vector's own pointer, which the compiler
+    // would otherwise reload on every term.
+    std::uint32_t* const touched = s.touched.data();
+    std::uint8_t* const seen = s.seen.data();
+    Imath::V3f* const radiance = s.radiance.data();
+    std::size_t count = 0;
     for (std::uint32_t i = 0; i < stencil.count; ++i) {
         const float weight = float(stencil.maps[i].weight);
         const std::span<const std::uint32_t> texels = field_->maps.texels(stencil.maps[i].map);
         const std::span<const Imath::V3f> terms = field_->maps.terms(stencil.maps[i].map);
         for (std::size_t j = 0; j < texels.size(); ++j) {
             const std::uint32_t k = texels[j];
-            if (!s.seen[k]) s.touched.push_back(k);
-            s.seen[k] = 1;
-            s.radiance[k] += terms[j] * weight;
+            touched[count] = k;
+            count += 1u - seen[k];
+            seen[k] = 1;
+            radiance[k] += terms[j] * weight;
         }
     }
-    for (const std::uint32_t k : s.touched) {
+    return count;
+}
+
+// The interpolated field, clamped, weighed by each texel's cosine integral and gathered
+// into visibility blocks; then one occlusion ray per lit block.
+LightArrival ShadowFieldLight::arrivalInField(const Imath::V3d& x, const Imath::V3d& n, const RayScene* scene,
+                                              float offset, Scratch& s) const {
+    const Imath::V3d p = toLight(x), nl = n * rotation_.transposed();
+    const std::size_t touched = interpolateMaps(field_->lookup.stencil(p), s);
+    std::size_t litBlocks = 0;
+    for (std::size_t t = 0; t < touched; ++t) {
+        const std::uint32_t k = s.touched[t];
         // Radiance is never negative: what the truncated Haar series rings below 0 is 0.
         const Imath::V3f l(std::max(0.0f, s.radiance[k].x), std::max(0.0f, s.radiance[k].y),
                            std::max(0.0f, s.radiance[k].z));
@@ -154,17 +176,21 @@ LightArrival ShadowFieldLight::arrivalInField(const Imath::V3d& x, const Imath::
         if (l.x + l.y + l.z <= 0.0f) continue;
         const double w = field_->cosine.weight(k, nl);
         if (w <= 0.0) continue;
-        Texels& block = s.blocks[field_->texelBlocks[k]];
+        const std::uint32_t b = field_->texelBlocks[k];
+        s.touchedBlocks[litBlocks] = b;
+        litBlocks += 1u - s.blockSeen[b];
+        s.blockSeen[b] = 1;
         const Imath::V3d e = Imath::V3d(l) * w;
-        block.e += e;
-        block.direction += Imath::V3d(field_->texelDirections[k]) * channelSum(e);
+        s.blocks[b].e += e;
+        s.blocks[b].direction += Imath::V3d(field_->texelDirections[k]) * channelSum(e);
     }
-    s.touched.clear();
     Imath::V3d total(0.0);
     double cosineSum = 0.0;
     const Imath::V3f origin = Imath::V3f(x + n * double(offset));
-    for (Texels& block : s.blocks) {
-        const Texels lit = std::exchange(block, Texels{});
+    for (std::size_t t = 0; t < litBlocks; ++t) {
+        const std::uint32_t b = s.touchedBlocks[t];
+        s.blockSeen[b] = 0;
+        const Texels lit = std::exchange(s.blocks[b], Texels{});
         if (channelSum(lit.e) <= 0.0) continue;
         const Imath::V3d d = lit.direction.normalized();
         if (scene) {

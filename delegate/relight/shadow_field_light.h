@@ -89,6 +89,7 @@ public:
 private:
     struct Texels;
     struct Scratch;
+    std::size_t interpolateMaps(const FieldStencil& stencil, Scratch& scratch) const;
     LightArrival arrivalInField(const Imath::V3d& x, const Imath::V3d& n, const RayScene* scene, float offset,
                                 Scratch& scratch) const;
     LightArrival arrivalBeyond(const Imath::V3d& x, const Imath::V3d& n, const RayScene* scene, float offset) const;
