@@ -37,6 +37,15 @@ struct BakeOptions {
     std::uint64_t seed = 1;
 };
 
+// One stage of a farm bake, from its tasks' stats (bake/farm/task_stats.h).
+struct StageTasks {
+    std::string stage;       // "rows"
+    std::uint32_t tasks = 0;
+    std::uint32_t measured = 0;  // of `tasks`, those that left their stats
+    double secondsMax = 0.0, secondsTotal = 0.0;
+    std::uint64_t peakRssBytes = 0;  // the largest task's
+};
+
 struct BakeReport {
     std::uint64_t samples = 0;
     std::uint32_t charts = 0;
@@ -48,8 +57,10 @@ struct BakeReport {
     std::filesystem::path sidecarFile;  // STEM.<bake id>.opal, once written
     double transferRelRmse = 0.0;
     std::vector<std::pair<std::string, double>> seconds;  // per stage, in order
-    std::uint64_t peakRssBytes = 0;
+    std::uint64_t peakRssBytes = 0;  // a farm bake's: its largest task's
     std::vector<std::string> warnings;
+    std::uint32_t farmShards = 0;       // 0: not a farm bake
+    std::vector<StageTasks> farmStages;  // every stage, the merge last
 };
 
 // The stages before the transfer (import .. basis): the asset without its transfer and

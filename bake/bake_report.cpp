@@ -38,6 +38,19 @@ double parseNumber(std::string_view text, const std::string& part) {
     return v;
 }
 
+// A farm bake's tasks per stage (bake/farm/task_stats.h).
+nlohmann::ordered_json farmJson(const BakeReport& r) {
+    nlohmann::ordered_json stages = nlohmann::ordered_json::array();
+    for (const StageTasks& s : r.farmStages)
+        stages.push_back({{"stage", s.stage},
+                          {"tasks", s.tasks},
+                          {"measured", s.measured},
+                          {"seconds_max", s.secondsMax},
+                          {"seconds_total", s.secondsTotal},
+                          {"peak_rss_bytes", s.peakRssBytes}});
+    return {{"shards", r.farmShards}, {"stages", stages}};
+}
+
 }  // namespace
 
 void writeBakeReport(const std::filesystem::path& path, const BakeOptions& options, const BakeReport& r) {
@@ -66,6 +79,7 @@ void writeBakeReport(const std::filesystem::path& path, const BakeOptions& optio
     seconds["total"] = total;
     j["seconds"] = seconds;
     j["peak_rss_bytes"] = r.peakRssBytes;
+    if (r.farmShards) j["farm"] = farmJson(r);
     j["warnings"] = r.warnings;
     j["options"] = optionsJson(options);
     const std::string text = j.dump(2) + "\n";

@@ -11,7 +11,9 @@ namespace opal {
 
 // Writes the report atomically. Keys: samples, charts, grid, subdivision_level, render_vertices, raw_bytes,
 // step1_bytes, step2_bytes, sidecar_bytes, compression_ratio, energy_kept,
-// transfer_rel_rmse, seconds {stage: s, total}, peak_rss_bytes, warnings, options.
+// transfer_rel_rmse, seconds {stage: s, total}, peak_rss_bytes, warnings, options; a farm
+// bake adds farm {shards, stages: [{stage, tasks, measured, seconds_max, seconds_total,
+// peak_rss_bytes}]} and its seconds are the merge task's, its peak_rss_bytes the largest task's.
 void writeBakeReport(const std::filesystem::path& path, const BakeOptions& options, const BakeReport& report);
 
 std::string formatBakeSummary(const std::filesystem::path& stem, const BakeReport& report);

@@ -3,12 +3,13 @@
 #include "bake/farm/child_process.h"
 #include "bake/farm/farm_task_runner.h"
 #include "schema/error.h"
+#include "schema/usd/atomic_file.h"
 
 #include <algorithm>
 
 namespace opal {
 
-FarmFolder setUpFarmFolder(const FarmSpec& spec) {
+FarmFolder setUpFarmFolder(const FarmSpec& spec, const std::filesystem::path& report) {
     const FarmFolder folder = FarmFolder::forStem(std::filesystem::absolute(spec.stem));
     std::error_code error;
     if (std::filesystem::exists(folder.spec(), error)) {
@@ -22,6 +23,10 @@ FarmFolder setUpFarmFolder(const FarmSpec& spec) {
     std::filesystem::create_directories(folder.logs());
     std::filesystem::remove(folder.failed(), error);
     writeFarmSpec(folder, spec);
+    if (report.empty())
+        std::filesystem::remove(folder.reportRequest(), error);
+    else
+        writeFileAtomically(folder.reportRequest(), std::filesystem::absolute(report).string() + "\n");
     return folder;
 }
 

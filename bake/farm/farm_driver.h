@@ -16,8 +16,9 @@ namespace opal {
 
 // STEM.farm/ for `spec` (the folder's path absolute). A folder holding the same spec is
 // resumed: its verified outputs stay and its `failed` note goes. A folder of another bake
-// of the stem (other input or options) is emptied first.
-FarmFolder setUpFarmFolder(const FarmSpec& spec);
+// of the stem (other input or options) is emptied first. `report`: where the merge writes
+// the bake's JSON report (made absolute), or empty for none.
+FarmFolder setUpFarmFolder(const FarmSpec& spec, const std::filesystem::path& report);
 
 struct LocalFarmResult {
     std::uint32_t tasks = 0, retried = 0;

@@ -48,6 +48,10 @@ std::filesystem::path FarmFolder::log(FarmStage stage, std::uint32_t i) const {
     return logs() / (std::string(stageName(stage)) + "-" + std::to_string(i) + ".log");
 }
 
+std::filesystem::path FarmFolder::stats(FarmStage stage, std::uint32_t i) const {
+    return path_ / "stats" / (std::string(stageName(stage)) + "-" + std::to_string(i));
+}
+
 std::string taskName(FarmStage stage, std::uint32_t i) {
     return std::string(stageName(stage)) + " " + std::to_string(i);
 }

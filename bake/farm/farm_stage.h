@@ -10,7 +10,8 @@
 //   merge    1 task   the matrices assembled block by block, environment visibility,
 //                     the transfer error, the asset written (asset_stem.h); the folder removed
 // The folder also holds spec.task (what to bake, written by the submitting opal-bake),
-// jobs (Slurm job ids per stage), failed (why the bake stopped) and logs/STAGE-I.log.
+// jobs (Slurm job ids per stage), failed (why the bake stopped), logs/STAGE-I.log,
+// stats/STAGE-I (what each task cost) and report-path (where --json wants the report).
 #pragma once
 
 #include <cstdint>
@@ -47,6 +48,10 @@ public:
     std::filesystem::path output(FarmStage stage, std::uint32_t i) const;
     std::filesystem::path log(FarmStage stage, std::uint32_t i) const;
     std::filesystem::path logs() const { return path_ / "logs"; }
+    // What task (stage, i) cost (task_stats.h).
+    std::filesystem::path stats(FarmStage stage, std::uint32_t i) const;
+    // The JSON report the submitting opal-bake asked for (--json): the merge writes it.
+    std::filesystem::path reportRequest() const { return path_ / "report-path"; }
 
 private:
     std::filesystem::path path_;

@@ -3,11 +3,16 @@
 #include "bake/bake_report.h"
 #include "bake/farm/farm_spec.h"
 #include "bake/farm/task_file.h"
+#include "bake/farm/task_stats.h"
 #include "bake/transfer_stages.h"
 #include "schema/error.h"
 #include "schema/usd/crash_point.h"
 
+#include <algorithm>
+#include <chrono>
 #include <cstdlib>
+#include <fstream>
+#include <optional>
 #include <sstream>
 
 namespace opal {
@@ -217,7 +222,25 @@ KeptColumns readKept(const TaskContext& c, std::uint32_t index, std::size_t k) {
     return kept;
 }
 
+// Where the submitting opal-bake asked for the JSON report, if it did.
+std::optional<std::filesystem::path> requestedReport(const FarmFolder& folder) {
+    std::ifstream in(folder.reportRequest());
+    std::string path;
+    if (!in || !std::getline(in, path) || path.empty()) return std::nullopt;
+    return std::filesystem::path(path);
+}
+
+// The farm's part of the report: every stage's tasks, the merge (this process) last.
+void addFarmStats(const TaskContext& c, double mergeSeconds, BakeReport& report) {
+    report.farmShards = c.spec.shards;
+    report.farmStages = gatherStageTasks(c.folder, c.spec.shards);
+    report.farmStages.push_back({"merge", 1, 1, mergeSeconds, mergeSeconds, peakRssBytes()});
+    report.peakRssBytes = 0;
+    for (const StageTasks& s : report.farmStages) report.peakRssBytes = std::max(report.peakRssBytes, s.peakRssBytes);
+}
+
 std::string runMerge(const TaskContext& c, const CancelToken& cancel) {
+    const auto start = std::chrono::steady_clock::now();
     const EnergyHistogram all = allEnergies(c);
     const int minBin = all.thresholdBin(c.plan.settings.energyFraction);
     TranslucentAsset asset = c.prepared.asset;
@@ -234,6 +257,10 @@ std::string runMerge(const TaskContext& c, const CancelToken& cancel) {
     finishBake(c.spec.options, asset, nullptr, cancel, &report);
     passCrashPoints(FarmStage::Merge, 0);
     writeBakedAsset(std::filesystem::path(c.spec.stem), asset, &report);
+    if (const auto json = requestedReport(c.folder)) {
+        addFarmStats(c, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), report);
+        writeBakeReport(*json, c.spec.options, report);
+    }
     // The asset is written: the intermediates are of no more use. The folder itself goes
     // last, so its absence (what --wait looks for) means nothing of the bake is left; a
     // folder renamed away first would still be there, under another name, when --wait

@@ -2,9 +2,11 @@
 
 #include "bake/farm/child_process.h"
 #include "bake/farm/farm_task.h"
+#include "bake/farm/task_stats.h"
 #include "schema/usd/atomic_file.h"
 
 #include <algorithm>
+#include <chrono>
 #include <fstream>
 #include <sstream>
 
@@ -36,6 +38,7 @@ TaskRun runTaskWithRetry(const std::filesystem::path& opalBake, const FarmFolder
     TaskRun run;
     std::vector<std::string> endings;
     std::string lastOutput;
+    const auto start = std::chrono::steady_clock::now();
     for (int attempt = 1; attempt <= kAttempts; ++attempt) {
         note(log, "task " + taskName(stage, index) + ", attempt " + std::to_string(attempt));
         const ChildExit e = runLogged(opalBake,
@@ -46,6 +49,11 @@ TaskRun runTaskWithRetry(const std::filesystem::path& opalBake, const FarmFolder
         run.peakRssBytes = std::max(run.peakRssBytes, e.peakRssBytes);
         if (e.ok()) {
             run.ok = true;
+            // The merge removed the folder: its cost is in the report it wrote itself.
+            if (stage != FarmStage::Merge)
+                writeTaskStats(folder, stage, index,
+                               {std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+                                run.peakRssBytes, attempt});
             return run;
         }
         if (cancel.requested()) note(log, "interrupted (" + e.describe() + ")");

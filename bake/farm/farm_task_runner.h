@@ -3,7 +3,8 @@
 // process, its output appended to the task's log (FOLDER/logs/STAGE-I.log), and when it
 // fails (an error, a crash, a kill) once more. When the second attempt fails too, it
 // writes FOLDER/failed: the task, how both attempts ended, its log and the log's last
-// line; that is what --wait and --farm-status report.
+// line; that is what --wait and --farm-status report. A task that succeeds leaves its
+// time and peak memory in FOLDER/stats/ (task_stats.h) for the bake's report.
 #pragma once
 
 #include "bake/farm/farm_stage.h"

@@ -72,15 +72,14 @@ bool FarmCommand::standalone() const {
     return task_->parsed() || retry_->parsed() || !statusStem_.empty() || !cancelStem_.empty();
 }
 
-void FarmCommand::validate(bool jsonReport) const {
+void FarmCommand::validate() const {
     if (farm_.empty()) return;
-    if (jsonReport)
-        throw CLI::ValidationError("--json", "not available with --farm (the merge task's log has the summary)");
     if (farm_ == "local" && (wait_ || !partition_.empty() || !memory_.empty() || !time_.empty()))
         throw CLI::ValidationError("--farm local", "--wait, --partition, --mem and --time are for --farm slurm");
 }
 
-int FarmCommand::run(const BakeOptions& options, const std::string& stem, bool quiet, const CancelToken& cancel) const {
+int FarmCommand::run(const BakeOptions& options, const std::string& stem, const std::filesystem::path& report,
+                     bool quiet, const CancelToken& cancel) const {
     if (task_->parsed()) return runTask(cancel);
     if (retry_->parsed()) return runWithRetry(cancel);
     if (!statusStem_.empty()) {
@@ -95,7 +94,7 @@ int FarmCommand::run(const BakeOptions& options, const std::string& stem, bool q
         std::printf("opal-bake: cancelled the jobs of %s\n", folder.path().c_str());
         return 0;
     }
-    return bake(options, stem, quiet, cancel);
+    return bake(options, stem, report, quiet, cancel);
 }
 
 int FarmCommand::runTask(const CancelToken& cancel) const {
@@ -123,8 +122,8 @@ int FarmCommand::runWithRetry(const CancelToken& cancel) const {
     return 1;
 }
 
-int FarmCommand::bake(const BakeOptions& options, const std::string& stem, bool quiet,
-                      const CancelToken& cancel) const {
+int FarmCommand::bake(const BakeOptions& options, const std::string& stem, const std::filesystem::path& report,
+                      bool quiet, const CancelToken& cancel) const {
     // What the prepare task would refuse, refused before anything is set up or submitted.
     (void)chartLayoutForSampleCount(options.samples);
     std::error_code error;
@@ -138,7 +137,7 @@ int FarmCommand::bake(const BakeOptions& options, const std::string& stem, bool 
     const AssetStem asset(stem);
     std::FILE* progress = quiet ? nullptr : stderr;
     if (farm_ == "local") {
-        const FarmFolder folder = setUpFarmFolder(spec);
+        const FarmFolder folder = setUpFarmFolder(spec, report);
         const LocalFarmResult result = runLocalFarm(folder, progress, cancel);
         if (!quiet)
             std::fprintf(stderr,
@@ -157,7 +156,7 @@ int FarmCommand::bake(const BakeOptions& options, const std::string& stem, bool 
         return 0;
     }
     refuseIfRunning(FarmFolder::forStem(std::filesystem::absolute(stem)));
-    const FarmFolder folder = setUpFarmFolder(spec);
+    const FarmFolder folder = setUpFarmFolder(spec, report);
     const StageJobs jobs = submitToSlurm(folder, SlurmOptions{partition_, memory_, time_});
     for (const auto& [stage, id] : jobs) std::printf("%s %s\n", std::string(stageName(stage)).c_str(), id.c_str());
     std::fflush(stdout);

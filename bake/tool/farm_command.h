@@ -31,15 +31,18 @@ public:
     // --farm given.
     bool farmBake() const { return !farm_.empty(); }
     // Checks the option combination; throws CLI::ValidationError.
-    void validate(bool jsonReport) const;
+    void validate() const;
 
-    // Runs what was chosen (standalone() or farmBake()); returns the exit code.
-    int run(const BakeOptions& options, const std::string& stem, bool quiet, const CancelToken& cancel) const;
+    // Runs what was chosen (standalone() or farmBake()); returns the exit code. `report`:
+    // --json's file (the merge task writes it), or empty.
+    int run(const BakeOptions& options, const std::string& stem, const std::filesystem::path& report, bool quiet,
+            const CancelToken& cancel) const;
 
 private:
     int runTask(const CancelToken& cancel) const;
     int runWithRetry(const CancelToken& cancel) const;
-    int bake(const BakeOptions& options, const std::string& stem, bool quiet, const CancelToken& cancel) const;
+    int bake(const BakeOptions& options, const std::string& stem, const std::filesystem::path& report, bool quiet,
+             const CancelToken& cancel) const;
 
     CLI::App* task_;
     CLI::App* retry_;

@@ -102,7 +102,7 @@ int main(int argc, char** argv) {
         const bool subcommand = light.chosen() || batch.chosen() || farm.standalone();
         if (!subcommand && options.input.empty()) throw CLI::RequiredError("input");
         if (!subcommand && outStem.empty()) throw CLI::RequiredError("--output");
-        farm.validate(!jsonPath.empty());
+        farm.validate();
         if (!range.empty() && range != "presets") options.range = parseRange(range);
         if (level != "auto") options.level = std::uint32_t(std::stoul(level));
     } catch (const CLI::ParseError& e) {
@@ -120,7 +120,7 @@ int main(int argc, char** argv) {
     try {
         if (light.chosen()) return light.run(&progress, cancel);
         if (batch.chosen()) return batch.run(cancel);
-        if (farm.standalone() || farm.farmBake()) return farm.run(options, outStem, quiet, cancel);
+        if (farm.standalone() || farm.farmBake()) return farm.run(options, outStem, jsonPath, quiet, cancel);
         // Taken before the work, so that a second bake of the stem fails at once.
         const opal::StemLock lock{opal::AssetStem(outStem)};
         opal::BakeReport report;

@@ -45,10 +45,13 @@ TEST(OpalBakeFarm, LocalFarmIsByteIdenticalToThePlainBakeFor1_3And7Shards) {
     EXPECT_EQ(transferDigest(plain.dir / "candle.usda"), kPlainTransferDigest) << "the plain bake's transfer changed";
     for (const char* shards : {"1", "3", "7"}) {
         const ScratchDir farm;
-        const test::RunResult r = test::bakeWith(
-            with(test::kFarmOptions, {"-o", (farm / "candle").string(), "--farm", "local", "--shards", shards}));
+        const std::filesystem::path report = plain.dir / ("farm" + std::string(shards) + ".json");
+        const test::RunResult r = test::bakeWith(with(test::kFarmOptions, {"-o", (farm / "candle").string(), "--farm",
+                                                                           "local", "--shards", shards, "--json",
+                                                                           report.string()}));
         ASSERT_EQ(r.exitCode, 0) << r.err;
         expectSameAsset(plain, farm, std::string(shards) + " shards");  // and no candle.farm left
+        test::expectFarmReport(plain, report, std::stoi(shards));
     }
 }
 

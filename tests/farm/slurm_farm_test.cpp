@@ -1,8 +1,9 @@
 // opal-bake --farm slurm through a real single-node Slurm cluster (scripts/slurm-cluster,
 // started by the ctest fixture `slurm`; SLURM_CONF points at it): the asset of 4 shards is
-// byte-identical to the plain bake's; a task killed mid-way is run again and the asset is
-// still identical; a task failing twice fails the bake naming its log, and leaves nothing
-// of the bake in the queue (the stages behind it cancelled, not pending forever).
+// byte-identical to the plain bake's, and its --json report has every task's time and peak
+// memory; a task killed mid-way is run again and the asset is still identical; a task
+// failing twice fails the bake naming its log, and leaves nothing of the bake in the queue
+// (the stages behind it cancelled, not pending forever).
 #include "tests/bake/farm_test_support.h"
 
 #include <gtest/gtest.h>
@@ -47,11 +48,14 @@ TEST(SlurmFarm, FourShardsThroughSlurmAreByteIdenticalToThePlainBake) {
     ASSERT_NE(std::getenv("SLURM_CONF"), nullptr) << "run through ctest: its fixture starts the cluster";
     const PlainBake plain;
     const ScratchDir farm;
-    const test::RunResult r = test::bakeWith(
-        with(test::kFarmOptions, {"-o", (farm / "candle").string(), "--farm", "slurm", "--shards", "4", "--wait"}));
+    const std::filesystem::path report = plain.dir / "farm.json";  // each task's time and memory under Slurm
+    const test::RunResult r = test::bakeWith(with(test::kFarmOptions, {"-o", (farm / "candle").string(), "--farm",
+                                                                       "slurm", "--shards", "4", "--wait", "--json",
+                                                                       report.string()}));
     ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
     EXPECT_EQ(jobIds(r.out).size(), 5u) << r.out;  // prepare, rows, columns, keep, merge
     expectSameAsset(plain, farm, "slurm, 4 shards");
+    test::expectFarmReport(plain, report, 4);
 }
 
 TEST(SlurmFarm, ATaskKilledMidWayIsRunAgainAndTheAssetIsUnchanged) {
