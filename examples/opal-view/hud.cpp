@@ -44,6 +44,9 @@ void drawHud(const ViewerModel& model, const HudFigures& figures) {
     ImGui::Text("frame %.1f ms | relight %.1f ms%s | %d / %d spp%s | %zu samples, %zu triangles", figures.frameMs,
                 status.lastSyncMs, status.busy ? " (relighting)" : "", stat(stats, "samplesPerPixel", 0), target,
                 stat(stats, "converged", false) ? " converged" : "", size.samples, size.triangles);
+    if (model.animated())
+        ImGui::Text("time code %.2f (%.3f s)%s", model.timeCode(), model.timeCode() / model.scene().timeCodesPerSecond,
+                    model.playing ? " playing (Space pauses)" : " paused (Space plays)");
     if (!figures.message.empty()) ImGui::TextWrapped("%s", figures.message.c_str());
     ImGui::End();
 }

@@ -19,6 +19,7 @@ constexpr Shortcut Shortcuts[] = {
     {"F", "frame everything"},
     {"R", "reset the camera"},
     {"P", "pixel probe: every AOV's value under the cursor"},
+    {"Space", "play or pause scene time (animated lights and transforms, flicker)"},
     {"Ctrl+Z", "undo a material or light edit"},
     {"Ctrl+Shift+Z, Ctrl+Y", "redo"},
     {"H", "this help"},

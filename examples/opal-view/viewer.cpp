@@ -115,6 +115,11 @@ void Viewer::frame() {
     if (everyAov_) model_.setRenderedAovs({});
     else model_.setRenderedAovs(settings_.aov == "color" ? std::vector<std::string>{"color"}
                                                          : std::vector<std::string>{"color", settings_.aov});
+    try {
+        model_.advance(hud_.frameMs / 1000.0);
+    } catch (const Error& e) {
+        hud_.message = std::string("error: scene time: ") + e.what();
+    }
     const int submitted = model_.update();
     if (measure_) {
         measure_->frame();

@@ -44,6 +44,7 @@ struct Scene {
     std::optional<double> metersPerUnit;    // layer metadata, when authored
     double timeCodesPerSecond = 24.0;       // layer metadata (USD's fallback 24)
     double timeCode = 0.0;                  // the time the descriptions were read at
+    std::optional<double> startTimeCode, endTimeCode;  // layer metadata, when authored
     // The prims whose descriptions change with time (they, or an ancestor's xformOps,
     // have more than one time sample): lights, cameras and meshes.
     std::set<hd::SdfPath> timeVarying;

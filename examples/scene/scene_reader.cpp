@@ -132,6 +132,13 @@ void SceneReader::readLayerMetadata(const usda::Layer& layer) {
                                                         formatNumber(scene_.timeCodesPerSecond) +
                                                         ", expected a positive number");
     }
+    for (const auto& [key, field] : {std::pair{"startTimeCode", &Scene::startTimeCode},
+                                     std::pair{"endTimeCode", &Scene::endTimeCode}})
+        if (const usda::Value* code = layer.metadata.find(key)) {
+            const double value = code->get<usda::types::Double>("metadata '" + std::string(key) + "'");
+            if (!std::isfinite(value)) throw usda::UsdaError(code->location(), std::string(key) + " is not finite");
+            scene_.*field = value;
+        }
     if (const usda::Value* mpu = layer.metadata.find("metersPerUnit")) {
         scene_.metersPerUnit = mpu->get<usda::types::Double>("metadata 'metersPerUnit'");
         if (!(*scene_.metersPerUnit > 0.0) || !std::isfinite(*scene_.metersPerUnit))

@@ -63,6 +63,29 @@ void EditedScene::setCamera(const hd::SdfPath& path, const hd::CameraDesc& desc)
     dirty_[path] |= hd::Dirty::Params | hd::Dirty::Transform;
 }
 
+void EditedScene::setTime(const scene::Scene* atTime, double timeCode) {
+    for (const hd::SdfPath& id : atTime ? scene_.timeVarying : std::set<hd::SdfPath>{}) {
+        const auto light = atTime->lights.find(id);
+        const auto mine = scene_.lights.find(id);  // gone when the artist renamed or removed it
+        if (light != atTime->lights.end() && mine != scene_.lights.end()) {
+            mine->second.desc = light->second.desc;
+            dirty_[id] |= LightBits;
+        }
+        const auto mesh = atTime->meshes.find(id);
+        if (mesh != atTime->meshes.end() && scene_.meshes.count(id)) {
+            scene_.meshes.at(id).desc.transform = mesh->second.desc.transform;
+            dirty_[id] |= hd::Dirty::Transform;
+        }
+    }
+    const double seconds = timeCode / scene_.timeCodesPerSecond;
+    for (auto& [id, light] : scene_.lights)
+        if (light.desc.flicker.amplitude > 0.0 && light.desc.time != seconds) {
+            light.desc.time = seconds;
+            dirty_[id] |= LightBits;
+        }
+    scene_.timeCode = timeCode;
+}
+
 void EditedScene::addLight(const hd::SdfPath& path, scene::SceneLight light) {
     requireNewPrimPath(scene_, path);
     scene_.lights[path] = std::move(light);

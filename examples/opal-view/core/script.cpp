@@ -59,6 +59,9 @@ constexpr ActionForm Forms[] = {
     {"camera reset", ActionKind::CameraReset},
     {"camera orbit N N", ActionKind::CameraOrbit},
     {"camera focal N", ActionKind::CameraFocal},
+    {"time N", ActionKind::Time},
+    {"=play", ActionKind::Play},
+    {"=pause", ActionKind::Play},
     {"wait", ActionKind::Wait},
     {"wait N", ActionKind::Wait},
     {"drag =material N", ActionKind::Drag},
@@ -122,7 +125,8 @@ std::string readable(const char* pattern) {
 std::string usage(const std::string& verb) {
     std::string forms, verbs;
     for (const ActionForm& form : Forms) {
-        const std::string first = tokensOf(form.pattern).front();
+        std::string first = tokensOf(form.pattern).front();
+        if (first.front() == '=') first.erase(0, 1);  // play, pause
         if (first == verb) forms += (forms.empty() ? "" : "; ") + readable(form.pattern);
         if (verbs.find(" " + first + ",") == std::string::npos) verbs += " " + first + ",";
     }

@@ -31,6 +31,8 @@
 //   camera orbit YAW PITCH             degrees, added to the camera's
 //   camera focal MM                    the lens' focal length (film 36 x 24 mm unless the
 //                                      scene's camera says otherwise), 1 to 10000
+//   time CODE                          scene time (the layer's time codes), paused there
+//   play | pause                       scene time runs with the wall clock, or stops
 //   wait [SECONDS]                     until the picture converged (default 300 s)
 //   drag material SECONDS              a person dragging the sigma_a green slider back and
 //                                      forth (2 s a sweep), then letting go; prints what the
@@ -55,7 +57,7 @@ namespace opal::view {
 
 enum class ActionKind {
     Load, MaterialSet, MaterialReset, MaterialPreset, LightMove, LightSet, LightAdd, LightRemove, LightRename,
-    LightEnable, Environment, Undo, Redo, Setting, Panel, View, Exposure, Gamma, Aov, CameraFrame, CameraReset, CameraOrbit, CameraFocal, Wait, Drag, Screenshot,
+    LightEnable, Environment, Undo, Redo, Setting, Panel, View, Exposure, Gamma, Aov, CameraFrame, CameraReset, CameraOrbit, CameraFocal, Time, Play, Wait, Drag, Screenshot,
     SaveExr, SavePng, SaveUsda, Probe, Quit
 };
 

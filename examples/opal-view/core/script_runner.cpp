@@ -200,6 +200,11 @@ bool ScriptRunner::run(const ScriptAction& action, ScriptHost& host) {
     case ActionKind::CameraReset:
     case ActionKind::CameraOrbit:
     case ActionKind::CameraFocal: runCamera(action, model); return true;
+    case ActionKind::Time:
+        model.playing = false;
+        model.setTime(action.numbers[0]);
+        return true;
+    case ActionKind::Play: model.playing = action.words[0] == "play"; return true;
     case ActionKind::Wait:
         return waitForPicture(action, host, action.numbers.empty() ? DefaultWaitSeconds : action.numbers[0]);
     case ActionKind::Drag: return drag(action, host);

@@ -6,8 +6,12 @@
 #include "examples/opal-view/core/setting_text.h"
 #include "examples/opal-view/core/usda_export.h"
 #include "examples/scene/render_settings_prim.h"
+#include "examples/scene/scene_reader.h"
 #include "examples/scene/scene_material.h"
 #include "schema/error.h"
+
+#include <algorithm>
+#include <cmath>
 
 namespace opal::view {
 namespace {
@@ -56,8 +60,41 @@ void ViewerModel::open(const std::filesystem::path& file) {
     undo_.clear();
     merging_ = gestureOpen_ = false;
     savedRevision_ = edited_->revision();
+    timeCode_ = document_->scene.timeCode;
+    playing = false;
     session_ = std::make_unique<RenderSession>(delegate_, std::move(scene), viewport_);
     submitted_ = viewport_;
+}
+
+void ViewerModel::setTime(double timeCode) {
+    if (!isOpen()) throw Error("no scene is open");
+    if (!std::isfinite(timeCode)) throw Error("the time code is not finite");
+    if (timeCode == timeCode_) return;
+    std::optional<scene::Scene> atTime;
+    if (!scene().timeVarying.empty()) atTime = scene::readScene(file_, assets_, timeCode);
+    edited_->setTime(atTime ? &*atTime : nullptr, timeCode);
+    timeCode_ = timeCode;
+}
+
+bool ViewerModel::animated() const {
+    if (!isOpen()) return false;
+    if (!scene().timeVarying.empty()) return true;
+    return std::any_of(scene().lights.begin(), scene().lights.end(),
+                       [](const auto& light) { return light.second.desc.flicker.amplitude > 0.0; });
+}
+
+void ViewerModel::advance(double seconds) {
+    if (!playing || !isOpen()) return;
+    double next = timeCode_ + seconds * scene().timeCodesPerSecond;
+    const scene::Scene& s = scene();
+    if (s.startTimeCode && s.endTimeCode && *s.endTimeCode > *s.startTimeCode && next > *s.endTimeCode)
+        next = *s.startTimeCode + std::fmod(next - *s.startTimeCode, *s.endTimeCode - *s.startTimeCode);
+    try {
+        setTime(next);
+    } catch (const Error&) {
+        playing = false;  // one message, not one a frame
+        throw;
+    }
 }
 
 OrbitCamera ViewerModel::initialCamera() const {

@@ -77,6 +77,19 @@ public:
     // size with the delegate's settings that differ from their defaults; no longer unsaved.
     void saveScene(const std::filesystem::path& file);
 
+    // Scene time, in the layer's time codes. setTime reads the file's time-varying lights
+    // and mesh transforms at `timeCode` (scene_reader.h) and gives flickering lights its
+    // seconds; not an edit (nothing to undo or save). Throws opal::Error: a time that is
+    // not finite, the file's errors at that time. The free camera is not animated.
+    void setTime(double timeCode);
+    double timeCode() const { return timeCode_; }
+    // Whether time changes the picture: time samples, or a flickering light.
+    bool animated() const;
+    // While playing, advance moves the time on by `seconds` of wall-clock time, looping over
+    // the layer's startTimeCode..endTimeCode when it gives them.
+    bool playing = false;
+    void advance(double seconds);
+
     OrbitCamera camera;
     void frameAll();
     void resetCamera();
@@ -122,6 +135,7 @@ private:
     UndoStack<EditState> undo_;
     bool merging_ = false, gestureOpen_ = false;
     long savedRevision_ = 0;
+    double timeCode_ = 0.0;
     RenderSettingChanges pendingSettings_;  // for the next submission
     std::unique_ptr<RenderSession> session_;  // last: goes first
 };
