@@ -40,7 +40,13 @@ inline ProcessResult runOpalRender(const test::SceneDir& dir, const std::string&
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir / "stdout.txt"), slurp(dir / "stderr.txt")};
 }
 
-// Empty when the file does not read.
+// The file's channel count; 0 when it does not read.
+inline int exrChannelCount(const std::filesystem::path& file) {
+    auto in = OIIO::ImageInput::open(file.string());
+    return in ? in->spec().nchannels : 0;
+}
+
+// Every channel of every pixel, interleaved; empty when the file does not read.
 inline std::vector<float> exrPixels(const std::filesystem::path& file) {
     auto in = OIIO::ImageInput::open(file.string());
     if (!in) return {};
