@@ -43,6 +43,9 @@ usda::Layer assetToOverLayer(const TranslucentAsset& asset, const std::string& s
     mesh.specifier = usda::Specifier::Over;
     mesh.typeName.clear();
     mesh.metadata.erase("kind");
+    // The render mesh has no holes: the user's holeIndices would name its faces by the
+    // control mesh's numbering (the bake already left those faces out).
+    mesh.addAttribute("holeIndices", usda::Value::make<usda::types::IntArray>({}));
 
     usda::Prim top = std::move(mesh);
     for (auto name = ancestors.rbegin(); name != ancestors.rend(); ++name) {

@@ -3,9 +3,11 @@
 // (prepended) with every attribute the asset layer (asset_layer.h) gives its prim, and
 // overrides the prim's mesh with the render mesh the sidecar matches: points, normals,
 // extent, faceVertexCounts, faceVertexIndices, orientation, subdivisionScheme "none"
-// (and primvars:displayColor). It defines no prim and takes no type, kind or transform:
-// sublayered over the user's layer, the user's def keeps its type, hierarchy and
-// xformOps, and the asset, baked in the prim's own space, lands where the prim is.
+// (and primvars:displayColor), with an empty holeIndices (the bake left the holes out). The
+// user's other primvars keep the control mesh's counts, which USD hosts then ignore. It
+// defines no prim and takes no type, kind or transform: sublayered over the user's layer,
+// the user's def keeps its type, hierarchy and xformOps, and the asset, baked in the
+// prim's own space, lands where the prim is.
 #pragma once
 
 #include "schema/asset/translucent_asset.h"
