@@ -71,6 +71,8 @@ std::string bakeIdentity(const BakeOptions& options, const TranslucentAsset& ass
     s << "tool opal-bake " << OPAL_VERSION << '\n'
       << "input " << options.input << '\n'
       << "input bytes " << (builtin ? std::string("built in") : hex(hashFile(options.input))) << '\n'
+      // Only when given, so that every other bake keeps its identifier.
+      << (options.applyTo.empty() ? std::string() : "apply to <" + options.applyTo + ">\n")
       << "render mesh " << hex(hashRenderMesh(asset.mesh)) << '\n'
       << "name " << asset.name << '\n'
       << "scheme " << asset.bake.scheme << '\n'

@@ -12,6 +12,7 @@
 #include "bake/surface_sampler.h"
 #include "bake/vertex_weights.h"
 #include "schema/asset/asset_layer.h"
+#include "schema/asset/asset_over_layer.h"
 #include "schema/asset/cube_map.h"
 #include "schema/asset/point_range.h"
 #include "schema/asset/self_term.h"
@@ -65,9 +66,11 @@ void reportFileUnits(const BakeOptions& options, std::optional<double> metersPer
 }
 
 ImportedMesh loadControlMesh(const BakeOptions& options, std::vector<std::string>* warnings) {
-    if (std::optional<ControlMesh> builtin = builtinMesh(options.input))
+    std::optional<ControlMesh> builtin = options.applyTo.empty() ? builtinMesh(options.input) : std::nullopt;
+    if (builtin)
         return ImportedMesh{std::move(*builtin), {}, std::nullopt, std::nullopt};
-    ImportedMesh imported = importMesh(options.input);
+    ImportedMesh imported =
+        options.applyTo.empty() ? importMesh(options.input) : importMeshPrim(options.input, options.applyTo);
     checkPointRange(imported.mesh.positions, options.unitsPerMm, imported.mesh.source + " (at --units-per-mm)",
                     "vertex");
     warnings->insert(warnings->end(), imported.warnings.begin(), imported.warnings.end());
@@ -131,7 +134,10 @@ ProfileBasis fitBasis(const BakeOptions& options, const std::string& assetName, 
     }
 }
 
-std::string assetName(const std::string& input) {
+// The prim's own name for --apply-to: the over-layer's prim and the sidecar must agree.
+std::string assetName(const BakeOptions& options) {
+    const std::string& input = options.input;
+    if (!options.applyTo.empty()) return options.applyTo.substr(options.applyTo.rfind('/') + 1);
     if (builtinMesh(input)) return input.substr(input.find(':') + 1);  // "builtin:wick" -> "wick"
     return assetNameFrom(std::filesystem::path(input).stem().string());
 }
@@ -147,7 +153,7 @@ TranslucentAsset prepareBake(const BakeOptions& options, ProgressSink* progress,
         throw Error("--units-per-mm must be a positive number");
 
     TranslucentAsset asset;
-    asset.name = assetName(options.input);
+    asset.name = assetName(options);
     asset.unitsPerMm = options.unitsPerMm;
     asset.range = options.range.value_or(EditableRange::coveringPresets());
     asset.range.validate("editable range");
@@ -245,13 +251,15 @@ TranslucentAsset bakeAsset(const BakeOptions& options, ProgressSink* progress, c
     return asset;
 }
 
-void writeBakedAsset(const StemLock& lock, const TranslucentAsset& asset, BakeReport* report) {
+void writeBakedAsset(const StemLock& lock, const TranslucentAsset& asset, BakeReport* report,
+                     const std::string& applyTo) {
     if (!asset.bake.identifier)
         throw Error(lock.stem().layer().string() + ": the asset has no bake identifier (bakeAsset gives it one)");
     const AssetStem& stem = lock.stem();
     const std::filesystem::path sidecar = stem.sidecar(*asset.bake.identifier);
     // The layer is formed (and the asset's name checked) before anything is written.
-    const usda::Layer layer = assetToLayer(asset, sidecar.filename().string());
+    const usda::Layer layer = applyTo.empty() ? assetToLayer(asset, sidecar.filename().string())
+                                              : assetToOverLayer(asset, sidecar.filename().string(), applyTo);
     std::vector<std::string> local;
     std::vector<std::string>& warnings = report ? report->warnings : local;
     crashPoint("bake:writing");
@@ -269,9 +277,10 @@ void writeBakedAsset(const StemLock& lock, const TranslucentAsset& asset, BakeRe
     }
 }
 
-void writeBakedAsset(const std::filesystem::path& stem, const TranslucentAsset& asset, BakeReport* report) {
+void writeBakedAsset(const std::filesystem::path& stem, const TranslucentAsset& asset, BakeReport* report,
+                     const std::string& applyTo) {
     const StemLock lock{AssetStem(stem)};
-    writeBakedAsset(lock, asset, report);
+    writeBakedAsset(lock, asset, report, applyTo);
 }
 
 double measureTransferError(const TranslucentAsset& asset, std::uint64_t seed) {

@@ -19,6 +19,10 @@ namespace opal {
 
 struct BakeOptions {
     std::string input;                // a mesh file, or a built-in mesh ("builtin:candle")
+    // A Mesh prim of a .usda input ("/World/Statue"): bake that prim alone, in its own
+    // space, named as the prim, and write the asset as an over-layer on it
+    // (schema/asset/asset_over_layer.h). Empty: the whole input, merged.
+    std::string applyTo;
     std::string scheme = "auto";      // auto | catmullClark | loop
     std::optional<std::uint32_t> level;  // uniform subdivision level; empty: automaticSubdivisionLevel
     std::uint64_t samples = 16384;    // N = M x 4^n
@@ -86,10 +90,12 @@ TranslucentAsset bakeAsset(const BakeOptions& options, ProgressSink* progress, c
 // opal:created/written/renamed, usda:created/written/renamed, bake:committed,
 // bake:pruned-one, bake:pruned. Throws opal::Error naming the file; the previous asset is
 // then intact. The asset must carry a bake identifier.
-void writeBakedAsset(const StemLock& lock, const TranslucentAsset& asset, BakeReport* report);
+void writeBakedAsset(const StemLock& lock, const TranslucentAsset& asset, BakeReport* report,
+                     const std::string& applyTo = {});
 
 // The same, taking the stem's lock for the write.
-void writeBakedAsset(const std::filesystem::path& stem, const TranslucentAsset& asset, BakeReport* report);
+void writeBakedAsset(const std::filesystem::path& stem, const TranslucentAsset& asset, BakeReport* report,
+                     const std::string& applyTo = {});
 
 // compressed vs exact transfer: RMS over >= 512 random output samples and RGB of the
 // difference between sum_k s_k (T_k E) computed through the compressed transfer and

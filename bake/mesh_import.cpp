@@ -239,4 +239,14 @@ ImportedMesh importMesh(const std::filesystem::path& path) {
     return imported;
 }
 
+ImportedMesh importMeshPrim(const std::filesystem::path& path, const std::string& primPath) {
+    checkReadable(path);
+    if (lowercaseExtension(path) != kUsdaExtension)
+        throw Error(path.string() + ": --apply-to <" + primPath + "> bakes a prim of a " + kUsdaExtension +
+                    " layer; this input is not one");
+    ImportedMesh imported = importUsdaMeshPrim(path, primPath);
+    checkArea(path, imported.mesh);
+    return imported;
+}
+
 }  // namespace opal

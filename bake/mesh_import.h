@@ -33,6 +33,10 @@ struct ImportedMesh {
 // file holds, none, triangle strips that hold no triangle, zero total area).
 ImportedMesh importMesh(const std::filesystem::path& path);
 
+// One Mesh prim of a .usda layer, in its own space (importUsdaMeshPrim); the same checks
+// as importMesh. Any other format is refused, naming the path.
+ImportedMesh importMeshPrim(const std::filesystem::path& path, const std::string& primPath);
+
 // The extensions importMesh accepts, for help texts: ".obj .ply .gltf .glb .stl .usda".
 std::string supportedMeshExtensions();
 

@@ -1,6 +1,7 @@
 #include "bake/usda_mesh_import.h"
 
 #include "bake/prim_transform.h"
+#include "bake/usda_prim_lookup.h"
 #include "schema/asset/point_range.h"
 #include "schema/error.h"
 #include "schema/usd/usda_reader.h"
@@ -171,6 +172,13 @@ public:
         for (const Prim& p : prims) visit(p, parent);
     }
 
+    // One Mesh prim in its own space: neither its xformOps nor its ancestors' apply.
+    void addLocal(const Prim& prim, const std::string& path) {
+        for (const std::string& op : primTransform(prim, path).unusedOps)
+            warnings_.push_back(bracketed(path) + "." + op + " is not in xformOpOrder: ignored, as USD does");
+        append(prim, path, Imath::M44d());
+    }
+
     ImportedMesh finish(std::optional<double> metersPerUnit) {
         if (meshes_.empty()) throw Error(file_ + ": " + nothingToBake());
         ImportedMesh result;
@@ -319,10 +327,9 @@ private:
     std::vector<std::string> others_;       // geometry that is not a Mesh, with its type
 };
 
-}  // namespace
-
-ImportedMesh importUsdaMesh(const std::filesystem::path& path) {
-    const usda::Layer layer = usda::readUsdaFile(path);
+// The layer, read and checked for what both imports refuse; its metersPerUnit.
+std::pair<usda::Layer, std::optional<double>> readMeshLayer(const std::filesystem::path& path) {
+    usda::Layer layer = usda::readUsdaFile(path);
     if (!layer.subLayers.empty()) {
         throw Error(path.string() + ": the layer has subLayers (@" + layer.subLayers.front() +
                     "@), which Opal does not compose: flatten it first (usdcat --flatten)");
@@ -333,9 +340,26 @@ ImportedMesh importUsdaMesh(const std::filesystem::path& path) {
         s << path.string() << ": metersPerUnit is " << *metersPerUnit << "; it must be positive";
         throw Error(s.str());
     }
-    // USD's fallback metersPerUnit is 0.01 (centimetres).
-    MeshCollector collector(path.string(), 0.001 / metersPerUnit.value_or(0.01));
+    return {std::move(layer), metersPerUnit};
+}
+
+// USD's fallback metersPerUnit is 0.01 (centimetres).
+double unitsPerMmOf(std::optional<double> metersPerUnit) { return 0.001 / metersPerUnit.value_or(0.01); }
+
+}  // namespace
+
+ImportedMesh importUsdaMesh(const std::filesystem::path& path) {
+    const auto [layer, metersPerUnit] = readMeshLayer(path);
+    MeshCollector collector(path.string(), unitsPerMmOf(metersPerUnit));
     collector.visitAll(layer.rootPrims, Inherited{});
+    return collector.finish(metersPerUnit);
+}
+
+ImportedMesh importUsdaMeshPrim(const std::filesystem::path& path, const std::string& primPath) {
+    const auto [layer, metersPerUnit] = readMeshLayer(path);
+    const Prim& prim = findBakeablePrim(layer, path.string(), primPath);
+    MeshCollector collector(path.string(), unitsPerMmOf(metersPerUnit));
+    collector.addLocal(prim, primPath);
     return collector.finish(metersPerUnit);
 }
 

@@ -27,9 +27,17 @@
 #include "bake/mesh_import.h"
 
 #include <filesystem>
+#include <string>
 
 namespace opal {
 
 ImportedMesh importUsdaMesh(const std::filesystem::path& path);
+
+// The one Mesh prim at `primPath` (opal-bake --apply-to), in its own space: neither its
+// xformOps nor its ancestors' are applied, since the over-layer the bake writes for it
+// keeps the prim's transform stack. Refused, besides the above: a path the layer does not
+// hold, a prim on it that is a class, an over, inactive or has references, and a last
+// prim that is not a Mesh (bake/usda_prim_lookup.h).
+ImportedMesh importUsdaMeshPrim(const std::filesystem::path& path, const std::string& primPath);
 
 }  // namespace opal

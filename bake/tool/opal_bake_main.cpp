@@ -2,7 +2,9 @@
 // OUT_STEM.<bake id>.opal, bake/asset_stem.h). opal-bake light SPEC -o OUT_STEM [options]:
 // bakes a local light's shadow field (bake/tool/light_command.h). opal-bake batch
 // MANIFEST.json: bakes many assets (bake/tool/batch_command.h). opal-bake INPUT -o OUT_STEM
-// --farm local|slurm: the same bake as farm tasks (bake/tool/farm_command.h). Exit codes: 0
+// --farm local|slurm: the same bake as farm tasks (bake/tool/farm_command.h). opal-bake
+// INPUT.usda --apply-to /Path/To/Mesh -o OUT_STEM: that one prim, written as an over-layer on
+// it (schema/asset/asset_over_layer.h). Exit codes: 0
 // done, 1 error (including another bake writing the same stem), 2 bad arguments, 130/143
 // interrupted by SIGINT/SIGTERM (nothing written; a previous asset stays intact).
 #include "bake/bake_pipeline.h"
@@ -54,6 +56,9 @@ int main(int argc, char** argv) {
     app.add_option("input", options.input,
                    "mesh file (.obj .ply .gltf .glb .stl .usda) or a built-in mesh: " + opal::builtinMeshNames());
     app.add_option("-o,--output", outStem, "output stem: writes STEM.usda and its sidecar STEM.<bake id>.opal");
+    app.add_option("--apply-to", options.applyTo,
+                   "a Mesh prim of the .usda input (/World/Statue): bake it alone, in its own space, and write "
+                   "STEM.usda as an over-layer on that prim to sublayer over the input");
     opal::LightCommand light(app);  // not const: parsing writes its options
     opal::BatchCommand batch(app);
     opal::FarmCommand farm(app);
@@ -103,6 +108,8 @@ int main(int argc, char** argv) {
         if (!subcommand && options.input.empty()) throw CLI::RequiredError("input");
         if (!subcommand && outStem.empty()) throw CLI::RequiredError("--output");
         farm.validate();
+        if (!options.applyTo.empty() && (farm.farmBake() || farm.standalone() || light.chosen() || batch.chosen()))
+            throw CLI::ValidationError("--apply-to", "bakes on this machine only (not with --farm, light or batch)");
         if (!range.empty() && range != "presets") options.range = parseRange(range);
         if (level != "auto") options.level = std::uint32_t(std::stoul(level));
     } catch (const CLI::ParseError& e) {
@@ -126,7 +133,7 @@ int main(int argc, char** argv) {
         opal::BakeReport report;
         const opal::TranslucentAsset asset = opal::bakeAsset(options, &progress, cancel, &report);
         cancel.throwIfRequested();
-        opal::writeBakedAsset(lock, asset, &report);
+        opal::writeBakedAsset(lock, asset, &report, options.applyTo);
         for (const std::string& w : report.warnings) std::fprintf(stderr, "opal-bake: warning: %s\n", w.c_str());
         if (!jsonPath.empty()) opal::writeBakeReport(jsonPath, options, report);
         if (!quiet) std::fprintf(stderr, "%s", opal::formatBakeSummary(outStem, report).c_str());

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "schema/asset/translucent_asset.h"
+#include "schema/usd/usda_layer.h"
 
 #include <filesystem>
 #include <map>
@@ -19,6 +20,10 @@ public:
     // for, under its absolute normal path). Throws opal::Error from readAsset; a failed
     // load is not cached.
     std::shared_ptr<const TranslucentAsset> load(const std::filesystem::path& usdaFile);
+    // The asset a prim applying OpalSubsurfaceAPI carries (a scene's Mesh composed from an
+    // over-layer), its sidecar resolved against `anchorFile` (readAsset(prim, ...)); cached
+    // under the sidecar's absolute normal path, which names the bake.
+    std::shared_ptr<const TranslucentAsset> load(const usda::Prim& prim, const std::filesystem::path& anchorFile);
 
     // What reading the assets warned about (an asset that should be re-baked), once per
     // asset file, since the last call.

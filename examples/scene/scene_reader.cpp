@@ -1,5 +1,7 @@
 #include "examples/scene/scene_reader.h"
 
+#include "examples/scene/applied_asset_mesh.h"
+#include "examples/scene/layer_stack.h"
 #include "examples/scene/scene_camera.h"
 #include "examples/scene/scene_lights.h"
 #include "examples/scene/scene_material.h"
@@ -17,7 +19,7 @@ namespace opal::scene {
 namespace {
 
 constexpr const char* SupportedTypes =
-    "Xform, Scope, Mesh or a typeless prim referencing a baked asset, Material, SphereLight, DistantLight, "
+    "Xform, Scope, Mesh or a typeless prim referencing a baked asset, Mesh applying OpalSubsurfaceAPI, Material, SphereLight, DistantLight, "
     "DomeLight, OpalShadowFieldLight, Camera, RenderSettings";
 
 bool isSupportedType(const std::string& type) {
@@ -51,7 +53,7 @@ std::optional<PrimRole> roleOf(const usda::Prim& prim) {
     const std::string& type = prim.typeName;
     if (type == "Material" || type == "RenderSettings") return std::nullopt;
     if (type == "Scope" || (type.empty() && !isAssetReference(prim))) return PrimRole{false, true};
-    if (type == "Xform" || isAssetReference(prim)) return PrimRole{true, true};
+    if (type == "Xform" || isAssetReference(prim) || appliesSubsurface(prim)) return PrimRole{true, true};
     return PrimRole{true, false};
 }
 
@@ -88,7 +90,7 @@ public:
     }
 
     Scene read() {
-        const usda::Layer layer = usda::readUsdaFile(scene_.file);
+        const usda::Layer layer = composeLayerStack(scene_.file);
         readLayerMetadata(layer);
         for (const usda::Prim& prim : layer.rootPrims) readPrim(prim, Inherited{});
         checkBindings();
@@ -117,9 +119,6 @@ private:
 };
 
 void SceneReader::readLayerMetadata(const usda::Layer& layer) {
-    if (!layer.subLayers.empty())
-        throw usda::UsdaError(layer.location, "subLayers are not supported in scenes (Opal reads one scene layer; "
-                                              "reference baked assets from prims instead)");
     if (const usda::Value* up = layer.metadata.find("upAxis")) {
         scene_.upAxis = up->get<usda::types::Token>("metadata 'upAxis'");
         if (scene_.upAxis != "Y" && scene_.upAxis != "Z")
@@ -151,7 +150,8 @@ void SceneReader::readPrim(const usda::Prim& prim, const Inherited& parent) {
     if (prim.specifier == usda::Specifier::Class) return;  // abstract: never rendered
     const hd::SdfPath path = childPath(parent.path, prim.name);
     if (prim.specifier == usda::Specifier::Over)
-        throw usda::UsdaError(prim.location, "over <" + path + ">: a scene layer has nothing to override; use def");
+        throw usda::UsdaError(prim.location, "over <" + path + ">: no layer of the scene's stack defines this prim "
+                                             "(a def in the scene layer or one of its subLayers)");
     if (const usda::Value* active = prim.metadata.find("active"); active && !active->get<usda::types::Bool>("active"))
         return;
     std::optional<usda::Prim> atTime;  // the prim's properties at the scene time, when any is sampled
@@ -220,6 +220,7 @@ void SceneReader::readTyped(PrimReader& reader, const Inherited& self) {
     const std::string& type = reader.prim().typeName;
     const bool reference = isAssetReference(reader.prim());
     if (reference && (type.empty() || type == "Mesh")) return addMesh(reader, self);
+    if (!reference && appliesSubsurface(reader.prim())) return addMesh(reader, self);
     if (reference && type == kShadowFieldLightType) {
         ReferencedLight referenced = referencedLight(reader, scene_.file, scene_.timeCode);
         Inherited light = self;
@@ -234,7 +235,8 @@ void SceneReader::readTyped(PrimReader& reader, const Inherited& self) {
     if (type.empty() || type == "Scope" || type == "Xform") return;
     if (type == "Mesh")
         reader.fail(reader.prim().location, "is a Mesh without a reference: Opal renders baked translucent assets "
-                                            "(references = @./asset.usda@)");
+                                            "(references = @./asset.usda@, or an over-layer from opal-bake "
+                                            "--apply-to sublayered over this layer)");
     if (type == "Material") {
         scene_.materials[self.path] = {readMaterial(reader), reader.prim().location};
     } else if (lightTypeOf(type)) {
@@ -249,7 +251,8 @@ void SceneReader::readTyped(PrimReader& reader, const Inherited& self) {
 
 void SceneReader::addMesh(PrimReader& reader, const Inherited& self) {
     if (self.timeVarying) scene_.timeVarying.insert(self.path);
-    SceneMesh mesh = readMesh(reader, self.toWorld, scene_.file, assets_);
+    SceneMesh mesh = isAssetReference(reader.prim()) ? readMesh(reader, self.toWorld, scene_.file, assets_)
+                                                     : readAppliedAssetMesh(reader, self.toWorld, scene_.file, assets_);
     mesh.desc.visible = self.visible;
     if (self.binding) {
         mesh.desc.material = self.binding->material;

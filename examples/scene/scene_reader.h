@@ -1,9 +1,10 @@
-// Reads a scene layer (the subset examples/SCENES.md documents) into a Scene: walks the
-// prims depth-first as a UsdStage traversal would, composes each prim's xformOps with its
-// parent's, resolves material bindings down the hierarchy (the nearest binding wins
-// unless an ancestor's is strongerThanDescendants), loads every referenced baked asset
-// once through an AssetCache, and checks every relationship target. Attributes with time
-// samples are read at `timeCode` (schema/usd/time_samples.h).
+// Reads a scene layer (the subset examples/SCENES.md documents), composed with its
+// subLayers (layer_stack.h), into a Scene: walks the prims depth-first as a UsdStage
+// traversal would, composes each prim's xformOps with its parent's, resolves material
+// bindings down the hierarchy (the nearest binding wins unless an ancestor's is
+// strongerThanDescendants), loads every baked asset once through an AssetCache, and checks
+// every relationship target. Attributes with time samples are read at `timeCode`
+// (schema/usd/time_samples.h).
 #pragma once
 
 #include "examples/scene/asset_cache.h"

@@ -229,11 +229,16 @@ TranslucentAsset readAsset(const std::filesystem::path& usdaPath, std::vector<st
     const std::string defaultPrim = layer.defaultPrim();
     if (layer.rootPrims.empty()) throw Error(usdaPath.string() + ": the layer has no prims");
     const usda::Prim& prim = defaultPrim.empty() ? layer.rootPrims.front() : layer.prim("/" + defaultPrim);
+    return readAsset(prim, usdaPath, warnings);
+}
+
+TranslucentAsset readAsset(const usda::Prim& prim, const std::filesystem::path& anchorFile,
+                           std::vector<std::string>* warnings) {
     TranslucentAsset asset;
     const std::string sidecar = primToAsset(prim, asset);
-    const std::filesystem::path sidecarPath = usdaPath.parent_path() / sidecar;
+    const std::filesystem::path sidecarPath = anchorFile.parent_path() / sidecar;
     const SidecarHeader header = readSidecar(sidecarPath, asset);
-    checkSameBake(usdaPath, sidecarPath, asset.bake.identifier, header.bakeId, warnings);
+    checkSameBake(anchorFile, sidecarPath, asset.bake.identifier, header.bakeId, warnings);
     checkSidecarMatches(header, asset, sidecarPath);
     return asset;
 }

@@ -44,4 +44,10 @@ std::string primToAsset(const usda::Prim& prim, TranslucentAsset& asset);
 // Opal recorded one) loads, and adds one warning to `warnings` saying to re-bake it.
 TranslucentAsset readAsset(const std::filesystem::path& usdaPath, std::vector<std::string>* warnings = nullptr);
 
+// The same for a prim that applies OpalSubsurfaceAPI wherever it stands (a scene's prim
+// composed from an over-layer, say): its sidecar is resolved relative to the directory of
+// `anchorFile`, the layer its asset paths are anchored at, which messages name.
+TranslucentAsset readAsset(const usda::Prim& prim, const std::filesystem::path& anchorFile,
+                           std::vector<std::string>* warnings = nullptr);
+
 }  // namespace opal

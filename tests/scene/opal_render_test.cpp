@@ -4,6 +4,7 @@
 // pixels; a malformed scene must exit 1 naming file:line:column and leave no file behind.
 #include "bake/bake_pipeline.h"
 #include "tests/scene/candle_scene_assets.h"
+#include "tests/scene/opal_render_process.h"
 #include "tests/scene/scene_test_files.h"
 #include "tests/render/render_scene.h"
 
@@ -23,25 +24,6 @@
 
 namespace opal::scene {
 namespace {
-
-struct ProcessResult {
-    int exitCode = -1;
-    std::string out, err;
-};
-
-std::string slurp(const std::filesystem::path& file) {
-    std::ifstream in(file);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
-ProcessResult runOpalRender(const test::SceneDir& dir, const std::string& arguments) {
-    const std::string command = std::string("'") + OPAL_RENDER_EXECUTABLE + "' " + arguments + " > '" +
-                                (dir / "stdout.txt").string() + "' 2> '" + (dir / "stderr.txt").string() + "'";
-    const int status = std::system(command.c_str());
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir / "stdout.txt"), slurp(dir / "stderr.txt")};
-}
 
 // The 5 mm sphere at the origin, a point light in front of it, a camera 30 mm away.
 std::string litScene(const std::string& intensity) {
@@ -113,15 +95,6 @@ TEST(OpalRender, FramesWriteOneNumberedFilePairPerTimeCode) {
     EXPECT_NE(backwards.err.find("--frames '5:1': END is before START"), std::string::npos) << backwards.err;
     EXPECT_EQ(runOpalRender(dir, "'" + (dir / "scene.usda").string() + "' -o x.exr --frames 1:2 --time 3").exitCode, 2);
     EXPECT_EQ(runOpalRender(dir, "'" + (dir / "scene.usda").string() + "' -o x.exr --frames 1-2").exitCode, 2);
-}
-
-std::vector<float> exrPixels(const std::filesystem::path& file) {
-    auto in = OIIO::ImageInput::open(file.string());
-    if (!in) return {};
-    const OIIO::ImageSpec& spec = in->spec();
-    std::vector<float> pixels(std::size_t(spec.width) * spec.height * spec.nchannels);
-    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data())) return {};
-    return pixels;
 }
 
 // A light moved by time samples renders, at each frame, what a still scene with the

@@ -57,7 +57,7 @@ std::vector<ErrorCase> errorCases() {
          ":2:1: Xform </Candle>: references an asset, but its stronger type 'Xform' would replace the asset's Mesh"},
         {"MeshWithoutReference", prim("Mesh", ""),
          ":2:1: Mesh </P>: is a Mesh without a reference: Opal renders baked translucent assets"},
-        {"OverPrim", H + "over \"P\"\n{\n}\n", ":2:1: over </P>: a scene layer has nothing to override; use def"},
+        {"OverPrim", H + "over \"P\"\n{\n}\n", ":2:1: over </P>: no layer of the scene's stack defines this prim"},
         {"UnsupportedApiSchema", H + "def Xform \"P\" (\n    prepend apiSchemas = [\"GeomModelAPI\"]\n)\n{\n}\n",
          ":2:1: Xform </P>: applies 'GeomModelAPI', which Opal's scene subset does not support on this prim type"},
         {"BadUpAxis", "#usda 1.0\n(\n    upAxis = \"X\"\n)\n", ":3:14: upAxis is 'X', expected \"Y\" or \"Z\""},
