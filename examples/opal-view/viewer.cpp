@@ -178,7 +178,7 @@ void Viewer::drawInterface() {
     ImGui::SetNextWindowSizeConstraints(ImVec2(PanelWidth, 0.0f), ImVec2(PanelWidth, tallest));
     ImGui::Begin("Look");
     drawMaterialPanel(model_);
-    drawLightPanel(model_, lightProblem_);
+    drawLightPanel(model_, lightPanel_);
     drawEnvironmentPanel(model_, environment_);
     drawCameraPanel(model_);
     drawColorPanel(display_, settings_);

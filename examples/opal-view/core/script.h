@@ -12,7 +12,14 @@
 //   light set PATH color R G B
 //   light set PATH temperature K|off   UsdLux colour temperature (kelvin, 500 to 40000) times
 //                                      the color, or off
-//   light add point|distant|dome [PATH]  a new light (default: under /_OpalView/Lights), selected
+//   light set PATH radius R            a sphere or spot light's radius (scene units)
+//   light set PATH cone DEGREES        a sphere light's cone (0 to 180 off its axis): a spot
+//   light set PATH softness S          a spot light's cone softness, 0 to 1
+//   light set PATH angle DEGREES       a distant light's angular diameter, 0 to 180
+//   light add point|sphere|spot|distant|dome [PATH]
+//                                      a new light (default: under /_OpalView/Lights), selected
+//   light add shadowfield LAYER.usda [PATH]  a baked light layer (opal-bake light) as a new
+//                                      light where a new point light would go
 //   light remove PATH
 //   light rename PATH NAME             a new last element of its path
 //   light enable|disable PATH          a disabled light stays in the scene, unlit

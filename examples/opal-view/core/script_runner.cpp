@@ -3,6 +3,7 @@
 #include "examples/opal-view/core/color_temperature.h"
 #include "examples/opal-view/core/edited_scene.h"
 #include "examples/opal-view/core/environment_edit.h"
+#include "examples/opal-view/core/light_shape.h"
 #include "schema/error.h"
 
 #include <algorithm>
@@ -30,9 +31,11 @@ void say(const std::string& line) {
 void runLightSet(const ScriptAction& action, ViewerModel& model) {
     switch (action.kind) {
     case ActionKind::LightAdd: {
+        const bool field = action.words[0] == "shadowfield";
         std::optional<hd::SdfPath> path;
-        if (action.words.size() > 1) path = action.words[1];
-        say("added light " + model.addLight(newLightKind(action.words[0]).value(), path));
+        if (action.words.size() > (field ? 2u : 1u)) path = action.words.back();
+        say("added light " + (field ? model.addShadowFieldLight(action.words[1], path)
+                                    : model.addLight(newLightKind(action.words[0]).value(), path)));
         return;
     }
     case ActionKind::LightRemove: return model.removeLight(action.words.at(0));
@@ -57,6 +60,8 @@ void runLight(const ScriptAction& action, ViewerModel& model) {
     if (parameter == "exposure") light.exposure = action.numbers[0];
     if (parameter == "color") light.color = Rgb{action.numbers[0], action.numbers[1], action.numbers[2]};
     if (parameter == "temperature") setColorTemperature(light, action.numbers.empty() ? 0.0 : action.numbers[0]);
+    for (const std::string_view shape : lightShapeParameters())
+        if (parameter == shape) setShapeParameter(light, parameter, action.numbers[0]);
     model.setLight(path, light);
 }
 
