@@ -19,6 +19,7 @@ constexpr Shortcut Shortcuts[] = {
     {"F", "frame everything"},
     {"R", "reset the camera"},
     {"P", "pixel probe: every AOV's value under the cursor"},
+    {"G", "light gizmos: where each light is, an arrow for a distant light"},
     {"Ctrl+Z", "undo a material or light edit"},
     {"Ctrl+Shift+Z, Ctrl+Y", "redo"},
     {"H", "this help"},

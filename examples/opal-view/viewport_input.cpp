@@ -47,6 +47,7 @@ void handleViewportInput(ViewerModel& model, PanelVisibility& panels) {
         if (ImGui::IsKeyPressed(GLFW_KEY_R, false)) model.resetCamera();
         if (ImGui::IsKeyPressed(GLFW_KEY_H, false)) panels.help = !panels.help;
         if (ImGui::IsKeyPressed(GLFW_KEY_P, false)) panels.probe = !panels.probe;
+        if (ImGui::IsKeyPressed(GLFW_KEY_G, false)) panels.gizmos = !panels.gizmos;
     }
     if (io.WantCaptureMouse || io.DisplaySize.x <= 0.0f || io.DisplaySize.y <= 0.0f) return;
     const Pointer pointer = pointerOf(io);

@@ -164,5 +164,14 @@ light set /World/Sun angle 2.5
     EXPECT_EQ(errorOf("light set /World/Spot width 3\n").rfind("look.script:1: bad arguments for 'light'", 0), 0u);
 }
 
+TEST(Script, ParsesTheGizmoSwitch) {
+    const std::vector<ScriptAction> actions = parseScript("quit\ngizmos off\ngizmos on\n", "look.script");
+    ASSERT_EQ(actions.size(), 3u);
+    EXPECT_EQ(actions[1].kind, ActionKind::Gizmos);
+    EXPECT_EQ(actions[1].words, std::vector<std::string>{"off"});
+    EXPECT_EQ(actions[2].words, std::vector<std::string>{"on"});
+    EXPECT_EQ(errorOf("gizmos maybe\n").rfind("look.script:1: bad arguments for 'gizmos'", 0), 0u);
+}
+
 }  // namespace
 }  // namespace opal::view

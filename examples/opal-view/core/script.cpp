@@ -61,6 +61,8 @@ constexpr ActionForm Forms[] = {
     {"setting W W", ActionKind::Setting},
     {"panel W =on", ActionKind::Panel},
     {"panel W =off", ActionKind::Panel},
+    {"gizmos =on", ActionKind::Gizmos},
+    {"gizmos =off", ActionKind::Gizmos},
     {"view W W", ActionKind::View},
     {"exposure N", ActionKind::Exposure},
     {"aov W", ActionKind::Aov},

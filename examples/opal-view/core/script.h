@@ -34,6 +34,7 @@
 //   gamma G                            display gamma: the shown values to the power 1 / G
 //   aov NAME                           the AOV shown (hd/aov.h)
 //   panel help|stats|settings|probe on|off   the optional panels (the View menu)
+//   gizmos on|off                      the light gizmos over the picture (View > Light gizmos)
 //   camera frame|reset
 //   camera orbit YAW PITCH             degrees, added to the camera's
 //   camera focal MM                    the lens' focal length (film 36 x 24 mm unless the
@@ -62,7 +63,7 @@ namespace opal::view {
 
 enum class ActionKind {
     Load, MaterialSet, MaterialReset, MaterialPreset, LightMove, LightSet, LightAdd, LightRemove, LightRename,
-    LightEnable, Environment, Undo, Redo, Setting, Panel, View, Exposure, Gamma, Aov, CameraFrame, CameraReset, CameraOrbit, CameraFocal, Wait, Drag, Screenshot,
+    LightEnable, Environment, Undo, Redo, Setting, Panel, Gizmos, View, Exposure, Gamma, Aov, CameraFrame, CameraReset, CameraOrbit, CameraFocal, Wait, Drag, Screenshot,
     SaveExr, SavePng, SaveUsda, Probe, Quit
 };
 

@@ -24,7 +24,7 @@ public:
     virtual void setExposure(double stops) = 0;
     virtual void setGamma(double gamma) = 0;  // throws opal::Error unless positive
     virtual void setAov(const std::string& aov) = 0;
-    // Opens or closes an optional panel: help, stats, settings or probe.
+    // Opens or closes an optional panel: help, stats, settings, probe, or the light gizmos.
     virtual void showPanel(const std::string& panel, bool open) = 0;
     // The renderer converged on the latest edit and the window shows that picture.
     virtual bool pictureSettled() = 0;
