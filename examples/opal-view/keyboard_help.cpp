@@ -14,7 +14,7 @@ constexpr Shortcut Shortcuts[] = {
     {"Alt + left drag", "tumble the camera about its target"},
     {"Alt + middle drag", "track (slide the camera and its target)"},
     {"Alt + right drag, wheel", "dolly"},
-    {"left drag", "move the selected point, sphere or spot light around the object"},
+    {"left drag", "move the selected point, sphere or spot light around the object; turn a distant light"},
     {"left click (probe on)", "select the asset or shadow-field light under the cursor"},
     {"F", "frame everything"},
     {"R", "reset the camera"},

@@ -28,6 +28,10 @@ Pointer pointerOf(const ImGuiIO& io) {
 void dragSelectedLight(ViewerModel& model, const Pointer& pointer) {
     if (!model.selectedLight) return;
     const hd::LightDesc& light = model.light(*model.selectedLight);
+    if (light.kind == hd::LightKind::Distant) {
+        if (const auto turned = distantLightGesture(model.camera, pointer, light)) model.setLight(*model.selectedLight, *turned);
+        return;
+    }
     if (light.kind != hd::LightKind::Sphere) return;  // point, sphere and spot lights
     if (const auto position = lightGesture(model.camera, pointer, lightPosition(light), model.bounds().center))
         model.moveLight(*model.selectedLight, *position);

@@ -1,9 +1,11 @@
-// The light gizmos, without a window and on screen. Truths: a pinhole camera's closed-form
-// projection (a point 1 mm off the axis at 10 mm, through a 50 mm lens, lies 5 mm off the
-// film's centre); the inverse of the light drag's own view ray; and the screenshot's pixels
-// where the lights project, with the gizmos on and off.
+// The light gizmos and the distant light's drag, without a window and on screen. Truths: a
+// pinhole camera's closed-form projection (a point 1 mm off the axis at 10 mm, through a
+// 50 mm lens, lies 5 mm off the film's centre); the inverse of the drag's own view ray;
+// Rodrigues' rotation about the camera's up and right axes for a turned distant light; and
+// the screenshot's pixels where the lights project, with the gizmos on and off.
 #include "examples/opal-view/core/light_drag.h"
 #include "examples/opal-view/core/light_gizmos.h"
+#include "examples/opal-view/core/pointer_gestures.h"
 #include "tests/view/view_process.h"
 
 #include <gtest/gtest.h>
@@ -26,6 +28,12 @@ hd::LightDesc lightAt(hd::LightKind kind, const Imath::V3d& at) {
     light.kind = kind;
     light.transform.setTranslation(at);
     return light;
+}
+
+// v rotated by `degrees` about the unit `axis`, right-handed (Rodrigues).
+Imath::V3d rotated(const Imath::V3d& v, const Imath::V3d& axis, double degrees) {
+    const double a = degrees * std::numbers::pi / 180.0;
+    return v * std::cos(a) + axis.cross(v) * std::sin(a) + axis * (axis.dot(v) * (1.0 - std::cos(a)));
 }
 
 Imath::V3d axisZ(const hd::LightDesc& light) { return {light.transform[2][0], light.transform[2][1], light.transform[2][2]}; }
@@ -92,6 +100,45 @@ TEST(LightGizmos, MarkersForPositionalLightsArrowsForDistantOnesNoneForTheDome) 
     EXPECT_EQ(gizmos[2].at, *projectToViewport(camera, 960.0, 540.0, z * 2.5));
     EXPECT_NEAR(gizmos[2].at.y, 270.0, 1e-9);
     EXPECT_GT(std::abs(gizmos[2].from.x - 480.0), std::abs(gizmos[2].at.x - 480.0)) << "pointing at the object";
+}
+
+TEST(DistantLightDrag, ADragTurnsTheLightAboutTheCamerasUpThenRightAxis) {
+    OrbitCamera camera = axisCamera();
+    hd::LightDesc sun = lightAt(hd::LightKind::Distant, {7.0, 8.0, 9.0});
+    // Straight on, 360 pixels right is a quarter turn about +Y: the light comes from +X.
+    const hd::LightDesc right = turnedLight(camera, sun, 360.0, 0.0);
+    expectSameDirection(axisZ(right), {1.0, 0.0, 0.0}, 1e-12);
+    EXPECT_EQ(right.transform[3][0], 7.0);
+    EXPECT_EQ(right.transform[3][2], 9.0);
+    expectSameDirection(axisZ(turnedLight(camera, sun, 0.0, 360.0)), {0.0, -1.0, 0.0}, 1e-12);  // down: from below
+
+    // From any camera: Rodrigues about its up axis by dx / 4 degrees, then about its right axis.
+    camera.yaw = -50.0;
+    camera.pitch = 30.0;
+    const Imath::V3d back = (eyePosition(camera) - camera.target).normalized();
+    const Imath::V3d rightAxis = Imath::V3d(0.0, 1.0, 0.0).cross(back).normalized(), up = back.cross(rightAxis);
+    sun.transform.setEulerAngles(Imath::V3d(0.4, -1.1, 0.3));
+    const hd::LightDesc turned = turnedLight(camera, sun, 44.0, -28.0);
+    for (int axis = 0; axis < 3; ++axis) {
+        const Imath::V3d before(sun.transform[axis][0], sun.transform[axis][1], sun.transform[axis][2]);
+        const Imath::V3d after(turned.transform[axis][0], turned.transform[axis][1], turned.transform[axis][2]);
+        expectSameDirection(after, rotated(rotated(before, up, 11.0), rightAxis, -7.0), 1e-12);
+    }
+}
+
+TEST(DistantLightDrag, OnlyALeftDragWithoutAltTurnsIt) {
+    const OrbitCamera camera = axisCamera();
+    const hd::LightDesc sun = lightAt(hd::LightKind::Distant, Imath::V3d(0.0));
+    Pointer pointer;
+    pointer.left = true;
+    pointer.dx = 40.0;
+    const std::optional<hd::LightDesc> turned = distantLightGesture(camera, pointer, sun);
+    ASSERT_TRUE(turned);
+    expectSameDirection(axisZ(*turned), axisZ(turnedLight(camera, sun, 40.0, 0.0)), 0.0);
+    pointer.alt = true;  // a tumble
+    EXPECT_FALSE(distantLightGesture(camera, pointer, sun));
+    pointer.alt = pointer.left = false;
+    EXPECT_FALSE(distantLightGesture(camera, pointer, sun));
 }
 
 }  // namespace

@@ -164,13 +164,17 @@ light set /World/Sun angle 2.5
     EXPECT_EQ(errorOf("light set /World/Spot width 3\n").rfind("look.script:1: bad arguments for 'light'", 0), 0u);
 }
 
-TEST(Script, ParsesTheGizmoSwitch) {
-    const std::vector<ScriptAction> actions = parseScript("quit\ngizmos off\ngizmos on\n", "look.script");
+TEST(Script, ParsesTheDistantLightTurnAndTheGizmoSwitch) {
+    const std::vector<ScriptAction> actions = parseScript("light turn /World/Sun 120 -40\ngizmos off\ngizmos on\n", "look.script");
     ASSERT_EQ(actions.size(), 3u);
+    EXPECT_EQ(actions[0].kind, ActionKind::LightTurn);
+    EXPECT_EQ(actions[0].words, std::vector<std::string>{"/World/Sun"});
+    EXPECT_EQ(actions[0].numbers, (std::vector<double>{120.0, -40.0}));
     EXPECT_EQ(actions[1].kind, ActionKind::Gizmos);
     EXPECT_EQ(actions[1].words, std::vector<std::string>{"off"});
     EXPECT_EQ(actions[2].words, std::vector<std::string>{"on"});
     EXPECT_EQ(errorOf("gizmos maybe\n").rfind("look.script:1: bad arguments for 'gizmos'", 0), 0u);
+    EXPECT_EQ(errorOf("light turn /World/Sun 10\n").rfind("look.script:1: bad arguments for 'light'", 0), 0u);
 }
 
 }  // namespace

@@ -27,6 +27,7 @@ constexpr ActionForm Forms[] = {
     {"material reset", ActionKind::MaterialReset},
     {"material preset W", ActionKind::MaterialPreset},
     {"light move W N N N", ActionKind::LightMove},
+    {"light turn W N N", ActionKind::LightTurn},
     {"light set W =intensity N", ActionKind::LightSet},
     {"light set W =exposure N", ActionKind::LightSet},
     {"light set W =color N N N", ActionKind::LightSet},

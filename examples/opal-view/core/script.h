@@ -8,6 +8,8 @@
 //   material reset                     back to the asset's baked default
 //   material preset NAME               a measured material (marble, skin1, ...), eta included
 //   light move PATH X Y Z              a light's position in world space
+//   light turn PATH DX DY              a distant light turned as a left drag of DX, DY pixels
+//                                      (y down) in the viewport turns it (light_drag.h)
 //   light set PATH intensity|exposure V
 //   light set PATH color R G B
 //   light set PATH temperature K|off   UsdLux colour temperature (kelvin, 500 to 40000) times
@@ -43,7 +45,8 @@
 //   drag material SECONDS              a person dragging the sigma_a green slider back and
 //                                      forth (2 s a sweep), then letting go; prints what the
 //                                      interface showed meanwhile (edit_latency.h)
-//   drag light PATH SECONDS            the same, circling the light about the object (4 s a turn)
+//   drag light PATH SECONDS            the same, circling the light about the object (4 s a turn;
+//                                      a distant light turns so)
 //   screenshot OUT.png                 the window's pixels, interface included
 //   save exr OUT.exr                   every AOV, scene-linear (waits for convergence)
 //   save png OUT.png                   the AOV shown, display-referred, the color AOV with its
@@ -62,7 +65,7 @@
 namespace opal::view {
 
 enum class ActionKind {
-    Load, MaterialSet, MaterialReset, MaterialPreset, LightMove, LightSet, LightAdd, LightRemove, LightRename,
+    Load, MaterialSet, MaterialReset, MaterialPreset, LightMove, LightTurn, LightSet, LightAdd, LightRemove, LightRename,
     LightEnable, Environment, Undo, Redo, Setting, Panel, Gizmos, View, Exposure, Gamma, Aov, CameraFrame, CameraReset, CameraOrbit, CameraFocal, Wait, Drag, Screenshot,
     SaveExr, SavePng, SaveUsda, Probe, Quit
 };

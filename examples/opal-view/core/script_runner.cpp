@@ -3,6 +3,7 @@
 #include "examples/opal-view/core/color_temperature.h"
 #include "examples/opal-view/core/edited_scene.h"
 #include "examples/opal-view/core/environment_edit.h"
+#include "examples/opal-view/core/light_drag.h"
 #include "examples/opal-view/core/light_shape.h"
 #include "schema/error.h"
 
@@ -55,6 +56,11 @@ void runLight(const ScriptAction& action, ViewerModel& model) {
     if (action.kind == ActionKind::LightMove)
         return model.moveLight(path, {action.numbers[0], action.numbers[1], action.numbers[2]});
     hd::LightDesc light = model.light(path);
+    if (action.kind == ActionKind::LightTurn) {
+        if (light.kind != hd::LightKind::Distant)
+            throw Error("<" + path + "> is not a distant light (light move places the others)");
+        return model.setLight(path, turnedLight(model.camera, light, action.numbers[0], action.numbers[1]));
+    }
     const std::string& parameter = action.words.at(1);
     if (parameter == "intensity") light.intensity = action.numbers[0];
     if (parameter == "exposure") light.exposure = action.numbers[0];
@@ -94,13 +100,19 @@ void dragMaterial(ViewerModel& model, double seconds) {
 }
 
 // The light swept around the object's centre on its sphere: a quarter turn a second about
-// +Y, and tipped by up to 30 degrees about +X (so a light straight above moves too).
-void dragLight(ViewerModel& model, const hd::SdfPath& path, const Imath::V3d& home, double seconds) {
+// +Y, and tipped by up to 30 degrees about +X (so a light straight above moves too). A
+// distant light turns so instead, its position kept.
+void dragLight(ViewerModel& model, const hd::SdfPath& path, const hd::LightDesc& home, double seconds) {
     const Imath::V3d center = model.bounds().center;
     Imath::M44d turn;
     turn.rotate(Imath::V3d(std::numbers::pi / 6.0 * std::sin(std::numbers::pi * seconds), 0.5 * std::numbers::pi * seconds, 0.0));
+    if (home.kind == hd::LightKind::Distant) {
+        hd::LightDesc turned = home;
+        turned.transform = home.transform * turn;
+        return model.setLight(path, movedLight(turned, lightPosition(home)));
+    }
     Imath::V3d offset;
-    turn.multDirMatrix(home - center, offset);
+    turn.multDirMatrix(lightPosition(home) - center, offset);
     model.moveLight(path, center + offset);
 }
 
@@ -130,7 +142,7 @@ bool ScriptRunner::drag(const ScriptAction& action, ScriptHost& host) {
     if (!dragging_) {
         dragging_ = true;
         dragStart_ = Clock::now();
-        if (light) dragHome_ = lightPosition(host.model().light(action.words[1]));
+        if (light) dragHome_ = host.model().light(action.words[1]);
         host.beginMeasure();
     }
     const double seconds = std::chrono::duration<double>(Clock::now() - dragStart_).count();
@@ -195,6 +207,7 @@ bool ScriptRunner::run(const ScriptAction& action, ScriptHost& host) {
     case ActionKind::Redo: runHistory(action, model); return true;
     case ActionKind::Setting: model.setRenderSettingText(action.words[0], action.words[1]); return true;
     case ActionKind::LightMove:
+    case ActionKind::LightTurn:
     case ActionKind::LightSet: runLight(action, model); return true;
     case ActionKind::View: host.setDisplayView(action.words[0], action.words[1]); return true;
     case ActionKind::Exposure: host.setExposure(action.numbers[0]); return true;

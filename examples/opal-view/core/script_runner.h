@@ -69,7 +69,7 @@ private:
     std::chrono::steady_clock::time_point waitStart_;
     bool dragging_ = false;
     std::chrono::steady_clock::time_point dragStart_, lastEdit_;
-    Imath::V3d dragHome_;  // the light's position when the drag began
+    hd::LightDesc dragHome_;  // the light when the drag began
 };
 
 }  // namespace opal::view
