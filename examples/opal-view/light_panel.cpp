@@ -28,10 +28,16 @@ const char* kindName(const scene::SceneLight& light) {
 
 void addButtons(ViewerModel& model, LightPanelState& state) {
     ImGui::TextUnformatted("Add");
+    const float indent = ImGui::GetCursorPosX() + ImGui::CalcTextSize("Add").x + ImGui::GetStyle().ItemSpacing.x;
+    int n = 0;
     for (const NewLightKind kind : newLightKinds()) {
-        ImGui::SameLine();
+        if (n++ % 3 == 0 && n > 1) ImGui::SetCursorPosX(indent);  // three a row: the panel is narrow
+        else ImGui::SameLine();
         if (ImGui::SmallButton(newLightKindName(kind))) model.addLight(kind);
     }
+    const ImGuiStyle& style = ImGui::GetStyle();
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - ImGui::CalcTextSize("shadow field").x -
+                            2.0f * style.FramePadding.x - style.ItemSpacing.x);
     const bool entered = ImGui::InputTextWithHint("##lightLayer", "baked light layer (.usda)", state.lightLayer.data(),
                                                   state.lightLayer.size(), ImGuiInputTextFlags_EnterReturnsTrue);
     ImGui::SameLine();
