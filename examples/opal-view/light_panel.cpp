@@ -2,15 +2,19 @@
 
 #include "examples/opal-view/core/color_temperature.h"
 #include "examples/opal-view/core/edited_scene.h"
+#include "examples/opal-view/core/light_shape.h"
 #include "schema/error.h"
 
 #include <imgui.h>
 
+#include <limits>
 #include <optional>
 #include <utility>
 
 namespace opal::view {
 namespace {
+
+constexpr double kDefaultCone = 30.0;  // degrees, when the box makes a sphere light a spot
 
 const char* kindName(const scene::SceneLight& light) {
     switch (light.desc.kind) {
@@ -22,11 +26,27 @@ const char* kindName(const scene::SceneLight& light) {
     return "light";
 }
 
-void addButtons(ViewerModel& model) {
+void addButtons(ViewerModel& model, LightPanelState& state) {
     ImGui::TextUnformatted("Add");
-    for (const NewLightKind kind : {NewLightKind::Point, NewLightKind::Distant, NewLightKind::Dome}) {
-        ImGui::SameLine();
+    const float indent = ImGui::GetCursorPosX() + ImGui::CalcTextSize("Add").x + ImGui::GetStyle().ItemSpacing.x;
+    int n = 0;
+    for (const NewLightKind kind : newLightKinds()) {
+        if (n++ % 3 == 0 && n > 1) ImGui::SetCursorPosX(indent);  // three a row: the panel is narrow
+        else ImGui::SameLine();
         if (ImGui::SmallButton(newLightKindName(kind))) model.addLight(kind);
+    }
+    const ImGuiStyle& style = ImGui::GetStyle();
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - ImGui::CalcTextSize("shadow field").x -
+                            2.0f * style.FramePadding.x - style.ItemSpacing.x);
+    const bool entered = ImGui::InputTextWithHint("##lightLayer", "baked light layer (.usda)", state.lightLayer.data(),
+                                                  state.lightLayer.size(), ImGuiInputTextFlags_EnterReturnsTrue);
+    ImGui::SameLine();
+    if (!(ImGui::SmallButton("shadow field") || entered) || state.lightLayer[0] == '\0') return;
+    try {
+        model.addShadowFieldLight(std::filesystem::path(state.lightLayer.data()));
+        state.problem.clear();
+    } catch (const Error& e) {
+        state.problem = e.what();
     }
 }
 
@@ -78,6 +98,50 @@ bool colorTemperature(hd::LightDesc& light) {
     return changed;
 }
 
+// The type's own parameters (light_shape.h): a sphere's radius, a spot's cone and softness
+// (a box makes a sphere light a spot), a distant light's angular diameter.
+bool shapeSliders(hd::LightDesc& light) {
+    bool changed = false;
+    float value = 0.0f;
+    if (hasShapeParameter(light, "radius")) {
+        value = float(light.radius);
+        const float step = std::max(0.01f * value, 1e-4f);
+        if (ImGui::DragFloat("radius", &value, step, 0.0f, std::numeric_limits<float>::max(), "%.4g",
+                             ImGuiSliderFlags_AlwaysClamp)) {
+            light.radius = value;
+            changed = true;
+        }
+    }
+    if (hasShapeParameter(light, "cone")) {
+        bool spot = light.shapingConeAngle.has_value();
+        if (ImGui::Checkbox("spot cone", &spot)) {
+            light.shapingConeAngle = spot ? std::optional<double>(kDefaultCone) : std::nullopt;
+            changed = true;
+        }
+    }
+    if (light.shapingConeAngle) {
+        value = float(*light.shapingConeAngle);
+        if (ImGui::SliderFloat("cone", &value, 0.0f, 180.0f, "%.1f deg", ImGuiSliderFlags_AlwaysClamp)) {
+            light.shapingConeAngle = value;
+            changed = true;
+        }
+        value = float(light.shapingConeSoftness);
+        if (ImGui::SliderFloat("softness", &value, 0.0f, 1.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp)) {
+            light.shapingConeSoftness = value;
+            changed = true;
+        }
+    }
+    if (hasShapeParameter(light, "angle")) {
+        value = float(light.angle);
+        if (ImGui::SliderFloat("angle", &value, 0.0f, 180.0f, "%.3g deg",
+                               ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp)) {
+            light.angle = value;
+            changed = true;
+        }
+    }
+    return changed;
+}
+
 void lightParameters(ViewerModel& model, const hd::SdfPath& path) {
     hd::LightDesc light = model.light(path);
     bool changed = emissionSliders(light);
@@ -87,6 +151,7 @@ void lightParameters(ViewerModel& model, const hd::SdfPath& path) {
         changed = true;
     }
     changed |= colorTemperature(light);
+    changed |= shapeSliders(light);
     if (changed) model.setLight(path, light);
     if (light.kind != hd::LightKind::Sphere) return;
     const Imath::V3d p = lightPosition(light);
@@ -111,9 +176,11 @@ bool emissionSliders(hd::LightDesc& light, const char* id) {
     return changed;
 }
 
-void drawLightPanel(ViewerModel& model, std::string& problem) {
+void drawLightPanel(ViewerModel& model, LightPanelState& state) {
     if (!ImGui::CollapsingHeader("Lights", ImGuiTreeNodeFlags_DefaultOpen)) return;
-    addButtons(model);
+    std::string& problem = state.problem;
+    addButtons(model, state);
+    if (!model.selectedLight && !problem.empty()) ImGui::TextWrapped("%s", problem.c_str());
     if (model.scene().lights.empty()) {
         ImGui::TextDisabled("the scene has no lights");
         return;

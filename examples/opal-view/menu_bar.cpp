@@ -61,6 +61,7 @@ std::optional<FileRequest> MenuBar::draw(ViewerModel& model, PanelVisibility& pa
         if (ImGui::BeginMenu("View")) {
             ImGui::MenuItem("Keyboard help", "H", &panels.help);
             ImGui::MenuItem("Pixel probe", "P", &panels.probe);
+            ImGui::MenuItem("Light gizmos", "G", &panels.gizmos);
             ImGui::MenuItem("Render stats", nullptr, &panels.stats);
             ImGui::MenuItem("Render settings", nullptr, &panels.settings);
             ImGui::EndMenu();

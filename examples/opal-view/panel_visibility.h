@@ -1,4 +1,4 @@
-// Which of the viewer's optional panels are open (the View menu and the H and P keys).
+// Which of the viewer's optional panels are open (the View menu and the H, P and G keys).
 #pragma once
 
 namespace opal::view {
@@ -8,6 +8,7 @@ struct PanelVisibility {
     bool stats = false;     // the delegate's render stats
     bool settings = false;  // the render settings, from the delegate's descriptors
     bool probe = false;     // the pixel probe under the cursor (P)
+    bool gizmos = true;     // the light gizmos over the picture (G)
 };
 
 }  // namespace opal::view

@@ -10,6 +10,7 @@
 #include "examples/opal-view/core/default_scene.h"
 #include "examples/opal-view/core/pixel_probe.h"
 #include "examples/opal-view/camera_panel.h"
+#include "examples/opal-view/light_gizmo_overlay.h"
 #include "examples/opal-view/light_panel.h"
 #include "examples/opal-view/material_panel.h"
 #include "examples/opal-view/screenshot.h"
@@ -183,7 +184,7 @@ void Viewer::drawInterface() {
     ImGui::SetNextWindowSizeConstraints(ImVec2(PanelWidth, 0.0f), ImVec2(PanelWidth, tallest));
     ImGui::Begin("Look");
     drawMaterialPanel(model_);
-    drawLightPanel(model_, lightProblem_);
+    drawLightPanel(model_, lightPanel_);
     drawEnvironmentPanel(model_, environment_);
     drawCameraPanel(model_);
     drawColorPanel(display_, settings_);
@@ -192,6 +193,7 @@ void Viewer::drawInterface() {
     drawStatsPanel(*renderer_.delegate, panels_.stats);
     drawRenderSettingsPanel(model_, *renderer_.delegate, panels_.settings, settingsProblem_);
     if (panels_.probe) drawProbeTooltip(model_, shownImage_, shownAov_);
+    if (panels_.gizmos) drawLightGizmos(model_);
     drawHud(model_, hud_);
 }
 
@@ -307,8 +309,9 @@ void Viewer::showPanel(const std::string& panel, bool open) {
                   : panel == "stats"    ? &panels_.stats
                   : panel == "settings" ? &panels_.settings
                   : panel == "probe"    ? &panels_.probe
+                  : panel == "gizmos"   ? &panels_.gizmos
                                         : nullptr;
-    if (!shown) throw Error("unknown panel '" + panel + "' (panels: help, stats, settings, probe)");
+    if (!shown) throw Error("unknown panel '" + panel + "' (panels: help, stats, settings, probe, gizmos)");
     *shown = open;
     framesSincePanels_ = 0;
 }

@@ -15,6 +15,7 @@
 #include "examples/opal-view/environment_panel.h"
 #include "examples/opal-view/hud.h"
 #include "examples/opal-view/imgui_layer.h"
+#include "examples/opal-view/light_panel.h"
 #include "examples/opal-view/menu_bar.h"
 #include "examples/opal-view/panel_visibility.h"
 #include "examples/opal-view/picture_texture.h"
@@ -81,7 +82,8 @@ private:
     MenuBar menu_;
     RecentFiles recent_;
     PanelVisibility panels_;
-    std::string lightProblem_, settingsProblem_;
+    LightPanelState lightPanel_;
+    std::string settingsProblem_;
     EnvironmentPanelState environment_;
     int framesSincePanels_ = 0;  // interface frames drawn since a script opened or closed a panel
     std::string renderError_;

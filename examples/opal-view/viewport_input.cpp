@@ -28,6 +28,10 @@ Pointer pointerOf(const ImGuiIO& io) {
 void dragSelectedLight(ViewerModel& model, const Pointer& pointer) {
     if (!model.selectedLight) return;
     const hd::LightDesc& light = model.light(*model.selectedLight);
+    if (light.kind == hd::LightKind::Distant) {
+        if (const auto turned = distantLightGesture(model.camera, pointer, light)) model.setLight(*model.selectedLight, *turned);
+        return;
+    }
     if (light.kind != hd::LightKind::Sphere) return;  // point, sphere and spot lights
     if (const auto position = lightGesture(model.camera, pointer, lightPosition(light), model.bounds().center))
         model.moveLight(*model.selectedLight, *position);
@@ -48,6 +52,7 @@ void handleViewportInput(ViewerModel& model, PanelVisibility& panels) {
         if (ImGui::IsKeyPressed(GLFW_KEY_H, false)) panels.help = !panels.help;
         if (ImGui::IsKeyPressed(GLFW_KEY_P, false)) panels.probe = !panels.probe;
         if (ImGui::IsKeyPressed(GLFW_KEY_SPACE, false)) model.playing = !model.playing;
+        if (ImGui::IsKeyPressed(GLFW_KEY_G, false)) panels.gizmos = !panels.gizmos;
     }
     if (io.WantCaptureMouse || io.DisplaySize.x <= 0.0f || io.DisplaySize.y <= 0.0f) return;
     const Pointer pointer = pointerOf(io);

@@ -1,6 +1,7 @@
 // Two images compared channel by channel (same size and channel names), for the tests that
 // hold a picture the viewer saved against the truth: opal-render on the scene it saved, or
-// the same viewer before an edit that was undone.
+// the same viewer before an edit that was undone; and measures of one picture (a channel's
+// mean, the side the light falls on).
 #pragma once
 
 #include "tests/view/view_process.h"
@@ -30,6 +31,25 @@ inline double channelMean(const ReadImage& image, const std::string& channel) {
     for (int y = 0; y < image.height; ++y)
         for (int x = 0; x < image.width; ++x) sum += image.at(x, y, c);
     return sum / std::max(1, image.width * image.height);
+}
+
+// Where the light falls across the asset: the luminance-weighted mean x of the asset's
+// pixels minus their plain mean x, in pixels (negative: brighter on the left).
+inline double brightSide(const ReadImage& exr) {
+    const int r = exr.channel("R"), g = exr.channel("G"), b = exr.channel("B"), a = exr.channel("A");
+    double weighted = 0.0, weight = 0.0, plain = 0.0;
+    int count = 0;
+    for (int y = 0; y < exr.height; ++y)
+        for (int x = 0; x < exr.width; ++x) {
+            if (exr.at(x, y, a) < 0.999f) continue;
+            const double luminance = 0.2126 * exr.at(x, y, r) + 0.7152 * exr.at(x, y, g) + 0.0722 * exr.at(x, y, b);
+            weighted += luminance * x;
+            weight += luminance;
+            plain += x;
+            ++count;
+        }
+    EXPECT_GT(weight, 0.0);
+    return weighted / weight - plain / std::max(count, 1);
 }
 
 }  // namespace opal::test

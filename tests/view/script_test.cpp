@@ -130,8 +130,51 @@ probe 12 34
     EXPECT_EQ(actions[11].words, std::vector<std::string>{"my scene.usda"});
     EXPECT_EQ(actions[12].kind, ActionKind::Probe);
     EXPECT_EQ(actions[12].numbers, (std::vector<double>{12.0, 34.0}));
-    EXPECT_EQ(errorOf("light add spot\n").rfind("look.script:1: bad arguments for 'light'", 0), 0u);
+    EXPECT_EQ(errorOf("light add area\n").rfind("look.script:1: bad arguments for 'light'", 0), 0u);
     EXPECT_EQ(errorOf("save tiff out.tif\n").rfind("look.script:1: bad arguments for 'save'", 0), 0u);
+}
+
+}  // namespace
+}  // namespace opal::view
+
+namespace opal::view {
+namespace {
+
+// Every light type is added, and each type's own parameters are set by name.
+TEST(Script, ParsesEveryLightTypeAndTheTypeSpecificParameters) {
+    const std::vector<ScriptAction> actions = parseScript(R"(light add sphere
+light add spot /World/Spot
+light set /World/Spot radius 0.5
+light set /World/Spot cone 25
+light set /World/Spot softness 0.3
+light set /World/Sun angle 2.5
+)", "look.script");
+    ASSERT_EQ(actions.size(), 6u);
+    EXPECT_EQ(actions[0].kind, ActionKind::LightAdd);
+    EXPECT_EQ(actions[0].words, std::vector<std::string>{"sphere"});
+    EXPECT_EQ(actions[1].words, (std::vector<std::string>{"spot", "/World/Spot"}));
+    const char* parameters[] = {"radius", "cone", "softness", "angle"};
+    const double values[] = {0.5, 25.0, 0.3, 2.5};
+    for (int i = 0; i < 4; ++i) {
+        EXPECT_EQ(actions[2 + i].kind, ActionKind::LightSet);
+        EXPECT_EQ(actions[2 + i].words.at(1), parameters[i]);
+        EXPECT_EQ(actions[2 + i].numbers, std::vector<double>{values[i]});
+    }
+    EXPECT_EQ(errorOf("light set /World/Spot cone wide\n").rfind("look.script:1: bad arguments for 'light'", 0), 0u);
+    EXPECT_EQ(errorOf("light set /World/Spot width 3\n").rfind("look.script:1: bad arguments for 'light'", 0), 0u);
+}
+
+TEST(Script, ParsesTheDistantLightTurnAndTheGizmoSwitch) {
+    const std::vector<ScriptAction> actions = parseScript("light turn /World/Sun 120 -40\ngizmos off\ngizmos on\n", "look.script");
+    ASSERT_EQ(actions.size(), 3u);
+    EXPECT_EQ(actions[0].kind, ActionKind::LightTurn);
+    EXPECT_EQ(actions[0].words, std::vector<std::string>{"/World/Sun"});
+    EXPECT_EQ(actions[0].numbers, (std::vector<double>{120.0, -40.0}));
+    EXPECT_EQ(actions[1].kind, ActionKind::Gizmos);
+    EXPECT_EQ(actions[1].words, std::vector<std::string>{"off"});
+    EXPECT_EQ(actions[2].words, std::vector<std::string>{"on"});
+    EXPECT_EQ(errorOf("gizmos maybe\n").rfind("look.script:1: bad arguments for 'gizmos'", 0), 0u);
+    EXPECT_EQ(errorOf("light turn /World/Sun 10\n").rfind("look.script:1: bad arguments for 'light'", 0), 0u);
 }
 
 }  // namespace

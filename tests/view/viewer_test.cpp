@@ -4,7 +4,7 @@
 // must do physically: the asset appears where the camera looks; absorbing more red and
 // blue leaves it greener; a light moved from left to right moves the bright side with it.
 // A bad script fails with its line.
-#include "tests/view/view_process.h"
+#include "tests/view/exr_compare.h"
 
 #include <cmath>
 #include <iostream>
@@ -69,25 +69,6 @@ double meanGreenness(const ReadImage& exr) {
         }
     EXPECT_GT(count, 1000) << "the asset covers too few pixels";
     return sum / std::max(count, 1);
-}
-
-// Where the light falls across the asset: the luminance-weighted mean x of the asset's
-// pixels minus their plain mean x, in pixels (negative: brighter on the left).
-double brightSide(const ReadImage& exr) {
-    const int r = exr.channel("R"), g = exr.channel("G"), b = exr.channel("B"), a = exr.channel("A");
-    double weighted = 0.0, weight = 0.0, plain = 0.0;
-    int count = 0;
-    for (int y = 0; y < exr.height; ++y)
-        for (int x = 0; x < exr.width; ++x) {
-            if (exr.at(x, y, a) < 0.999f) continue;
-            const double luminance = 0.2126 * exr.at(x, y, r) + 0.7152 * exr.at(x, y, g) + 0.0722 * exr.at(x, y, b);
-            weighted += luminance * x;
-            weight += luminance;
-            plain += x;
-            ++count;
-        }
-    EXPECT_GT(weight, 0.0);
-    return weighted / weight - plain / std::max(count, 1);
 }
 
 TEST(Viewer, TheScreenshotShowsTheAssetWhereTheSceneCameraLooks) {

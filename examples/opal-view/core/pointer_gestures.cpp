@@ -24,9 +24,21 @@ bool cameraGesture(OrbitCamera& camera, const Pointer& pointer) {
     return true;
 }
 
+namespace {
+
+bool dragsLight(const Pointer& pointer) { return !pointer.alt && pointer.left && (pointer.dx != 0.0 || pointer.dy != 0.0); }
+
+}  // namespace
+
+std::optional<hd::LightDesc> distantLightGesture(const OrbitCamera& camera, const Pointer& pointer,
+                                                 const hd::LightDesc& light) {
+    if (!dragsLight(pointer)) return std::nullopt;
+    return turnedLight(camera, light, pointer.dx, pointer.dy);
+}
+
 std::optional<Imath::V3d> lightGesture(const OrbitCamera& camera, const Pointer& pointer, const Imath::V3d& light,
                                        const Imath::V3d& center) {
-    if (pointer.alt || !pointer.left || (pointer.dx == 0.0 && pointer.dy == 0.0)) return std::nullopt;
+    if (!dragsLight(pointer)) return std::nullopt;
     const double ndcX = 2.0 * pointer.x / pointer.width - 1.0, ndcY = 1.0 - 2.0 * pointer.y / pointer.height;
     const Imath::V3d ray = viewRay(camera, pointer.width / pointer.height, ndcX, ndcY);
     return pointOnSphere(eyePosition(camera), ray, center, (light - center).length());

@@ -1,6 +1,7 @@
 // What the mouse does over the picture, as usdview and DCCs: Alt + left drag tumbles, Alt +
 // middle tracks, Alt + right dollies, the wheel dollies; a left drag without Alt moves the
-// selected light on its sphere around the object (light_drag.h). Window coordinates, y down.
+// selected light on its sphere around the object, or turns the selected distant light
+// (light_drag.h). Window coordinates, y down.
 #pragma once
 
 #include "examples/opal-view/core/orbit_camera.h"
@@ -24,5 +25,10 @@ bool cameraGesture(OrbitCamera& camera, const Pointer& pointer);
 // `center`); nothing when the pointer does not drag it.
 std::optional<Imath::V3d> lightGesture(const OrbitCamera& camera, const Pointer& pointer, const Imath::V3d& light,
                                        const Imath::V3d& center);
+
+// The distant light `light` turned by a left drag without Alt; nothing when the pointer does
+// not drag it.
+std::optional<hd::LightDesc> distantLightGesture(const OrbitCamera& camera, const Pointer& pointer,
+                                                 const hd::LightDesc& light);
 
 }  // namespace opal::view

@@ -8,11 +8,20 @@
 //   material reset                     back to the asset's baked default
 //   material preset NAME               a measured material (marble, skin1, ...), eta included
 //   light move PATH X Y Z              a light's position in world space
+//   light turn PATH DX DY              a distant light turned as a left drag of DX, DY pixels
+//                                      (y down) in the viewport turns it (light_drag.h)
 //   light set PATH intensity|exposure V
 //   light set PATH color R G B
 //   light set PATH temperature K|off   UsdLux colour temperature (kelvin, 500 to 40000) times
 //                                      the color, or off
-//   light add point|distant|dome [PATH]  a new light (default: under /_OpalView/Lights), selected
+//   light set PATH radius R            a sphere or spot light's radius (scene units)
+//   light set PATH cone DEGREES        a sphere light's cone (0 to 180 off its axis): a spot
+//   light set PATH softness S          a spot light's cone softness, 0 to 1
+//   light set PATH angle DEGREES       a distant light's angular diameter, 0 to 180
+//   light add point|sphere|spot|distant|dome [PATH]
+//                                      a new light (default: under /_OpalView/Lights), selected
+//   light add shadowfield LAYER.usda [PATH]  a baked light layer (opal-bake light) as a new
+//                                      light where a new point light would go
 //   light remove PATH
 //   light rename PATH NAME             a new last element of its path
 //   light enable|disable PATH          a disabled light stays in the scene, unlit
@@ -27,6 +36,7 @@
 //   gamma G                            display gamma: the shown values to the power 1 / G
 //   aov NAME                           the AOV shown (hd/aov.h)
 //   panel help|stats|settings|probe on|off   the optional panels (the View menu)
+//   gizmos on|off                      the light gizmos over the picture (View > Light gizmos)
 //   camera frame|reset
 //   camera orbit YAW PITCH             degrees, added to the camera's
 //   camera focal MM                    the lens' focal length (film 36 x 24 mm unless the
@@ -37,7 +47,8 @@
 //   drag material SECONDS              a person dragging the sigma_a green slider back and
 //                                      forth (2 s a sweep), then letting go; prints what the
 //                                      interface showed meanwhile (edit_latency.h)
-//   drag light PATH SECONDS            the same, circling the light about the object (4 s a turn)
+//   drag light PATH SECONDS            the same, circling the light about the object (4 s a turn;
+//                                      a distant light turns so)
 //   screenshot OUT.png                 the window's pixels, interface included
 //   save exr OUT.exr                   every AOV, scene-linear (waits for convergence)
 //   save png OUT.png                   the AOV shown, display-referred, the color AOV with its
@@ -56,8 +67,8 @@
 namespace opal::view {
 
 enum class ActionKind {
-    Load, MaterialSet, MaterialReset, MaterialPreset, LightMove, LightSet, LightAdd, LightRemove, LightRename,
-    LightEnable, Environment, Undo, Redo, Setting, Panel, View, Exposure, Gamma, Aov, CameraFrame, CameraReset, CameraOrbit, CameraFocal, Time, Play, Wait, Drag, Screenshot,
+    Load, MaterialSet, MaterialReset, MaterialPreset, LightMove, LightTurn, LightSet, LightAdd, LightRemove, LightRename,
+    LightEnable, Environment, Undo, Redo, Setting, Panel, Gizmos, View, Exposure, Gamma, Aov, CameraFrame, CameraReset, CameraOrbit, CameraFocal, Time, Play, Wait, Drag, Screenshot,
     SaveExr, SavePng, SaveUsda, Probe, Quit
 };
 

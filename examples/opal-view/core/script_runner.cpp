@@ -3,6 +3,8 @@
 #include "examples/opal-view/core/color_temperature.h"
 #include "examples/opal-view/core/edited_scene.h"
 #include "examples/opal-view/core/environment_edit.h"
+#include "examples/opal-view/core/light_drag.h"
+#include "examples/opal-view/core/light_shape.h"
 #include "schema/error.h"
 
 #include <algorithm>
@@ -30,9 +32,11 @@ void say(const std::string& line) {
 void runLightSet(const ScriptAction& action, ViewerModel& model) {
     switch (action.kind) {
     case ActionKind::LightAdd: {
+        const bool field = action.words[0] == "shadowfield";
         std::optional<hd::SdfPath> path;
-        if (action.words.size() > 1) path = action.words[1];
-        say("added light " + model.addLight(newLightKind(action.words[0]).value(), path));
+        if (action.words.size() > (field ? 2u : 1u)) path = action.words.back();
+        say("added light " + (field ? model.addShadowFieldLight(action.words[1], path)
+                                    : model.addLight(newLightKind(action.words[0]).value(), path)));
         return;
     }
     case ActionKind::LightRemove: return model.removeLight(action.words.at(0));
@@ -52,11 +56,18 @@ void runLight(const ScriptAction& action, ViewerModel& model) {
     if (action.kind == ActionKind::LightMove)
         return model.moveLight(path, {action.numbers[0], action.numbers[1], action.numbers[2]});
     hd::LightDesc light = model.light(path);
+    if (action.kind == ActionKind::LightTurn) {
+        if (light.kind != hd::LightKind::Distant)
+            throw Error("<" + path + "> is not a distant light (light move places the others)");
+        return model.setLight(path, turnedLight(model.camera, light, action.numbers[0], action.numbers[1]));
+    }
     const std::string& parameter = action.words.at(1);
     if (parameter == "intensity") light.intensity = action.numbers[0];
     if (parameter == "exposure") light.exposure = action.numbers[0];
     if (parameter == "color") light.color = Rgb{action.numbers[0], action.numbers[1], action.numbers[2]};
     if (parameter == "temperature") setColorTemperature(light, action.numbers.empty() ? 0.0 : action.numbers[0]);
+    for (const std::string_view shape : lightShapeParameters())
+        if (parameter == shape) setShapeParameter(light, parameter, action.numbers[0]);
     model.setLight(path, light);
 }
 
@@ -89,13 +100,19 @@ void dragMaterial(ViewerModel& model, double seconds) {
 }
 
 // The light swept around the object's centre on its sphere: a quarter turn a second about
-// +Y, and tipped by up to 30 degrees about +X (so a light straight above moves too).
-void dragLight(ViewerModel& model, const hd::SdfPath& path, const Imath::V3d& home, double seconds) {
+// +Y, and tipped by up to 30 degrees about +X (so a light straight above moves too). A
+// distant light turns so instead, its position kept.
+void dragLight(ViewerModel& model, const hd::SdfPath& path, const hd::LightDesc& home, double seconds) {
     const Imath::V3d center = model.bounds().center;
     Imath::M44d turn;
     turn.rotate(Imath::V3d(std::numbers::pi / 6.0 * std::sin(std::numbers::pi * seconds), 0.5 * std::numbers::pi * seconds, 0.0));
+    if (home.kind == hd::LightKind::Distant) {
+        hd::LightDesc turned = home;
+        turned.transform = home.transform * turn;
+        return model.setLight(path, movedLight(turned, lightPosition(home)));
+    }
     Imath::V3d offset;
-    turn.multDirMatrix(home - center, offset);
+    turn.multDirMatrix(lightPosition(home) - center, offset);
     model.moveLight(path, center + offset);
 }
 
@@ -125,7 +142,7 @@ bool ScriptRunner::drag(const ScriptAction& action, ScriptHost& host) {
     if (!dragging_) {
         dragging_ = true;
         dragStart_ = Clock::now();
-        if (light) dragHome_ = lightPosition(host.model().light(action.words[1]));
+        if (light) dragHome_ = host.model().light(action.words[1]);
         host.beginMeasure();
     }
     const double seconds = std::chrono::duration<double>(Clock::now() - dragStart_).count();
@@ -190,12 +207,14 @@ bool ScriptRunner::run(const ScriptAction& action, ScriptHost& host) {
     case ActionKind::Redo: runHistory(action, model); return true;
     case ActionKind::Setting: model.setRenderSettingText(action.words[0], action.words[1]); return true;
     case ActionKind::LightMove:
+    case ActionKind::LightTurn:
     case ActionKind::LightSet: runLight(action, model); return true;
     case ActionKind::View: host.setDisplayView(action.words[0], action.words[1]); return true;
     case ActionKind::Exposure: host.setExposure(action.numbers[0]); return true;
     case ActionKind::Gamma: host.setGamma(action.numbers[0]); return true;
     case ActionKind::Aov: host.setAov(action.words[0]); return true;
     case ActionKind::Panel: host.showPanel(action.words[0], action.words[1] == "on"); return true;
+    case ActionKind::Gizmos: host.showPanel("gizmos", action.words[0] == "on"); return true;
     case ActionKind::CameraFrame:
     case ActionKind::CameraReset:
     case ActionKind::CameraOrbit:

@@ -24,7 +24,7 @@ public:
     virtual void setExposure(double stops) = 0;
     virtual void setGamma(double gamma) = 0;  // throws opal::Error unless positive
     virtual void setAov(const std::string& aov) = 0;
-    // Opens or closes an optional panel: help, stats, settings or probe.
+    // Opens or closes an optional panel: help, stats, settings, probe, or the light gizmos.
     virtual void showPanel(const std::string& panel, bool open) = 0;
     // The renderer converged on the latest edit and the window shows that picture.
     virtual bool pictureSettled() = 0;
@@ -69,7 +69,7 @@ private:
     std::chrono::steady_clock::time_point waitStart_;
     bool dragging_ = false;
     std::chrono::steady_clock::time_point dragStart_, lastEdit_;
-    Imath::V3d dragHome_;  // the light's position when the drag began
+    hd::LightDesc dragHome_;  // the light when the drag began
 };
 
 }  // namespace opal::view

@@ -1,6 +1,7 @@
 #include "examples/opal-view/core/viewer_model.h"
 
 #include "examples/opal-view/core/layer_precision.h"
+#include "examples/opal-view/core/light_layer.h"
 #include "examples/opal-view/core/material_edit.h"
 #include "examples/opal-view/core/prim_path.h"
 #include "examples/opal-view/core/setting_text.h"
@@ -171,18 +172,28 @@ void ViewerModel::setLight(const hd::SdfPath& path, const hd::LightDesc& desc) {
 }
 
 hd::SdfPath ViewerModel::addLight(NewLightKind kind, const std::optional<hd::SdfPath>& path) {
+    std::string name = newLightKindName(kind);
+    name[0] = char(name[0] - 'a' + 'A');
+    return addSceneLight(name, newLight(kind, bounds_), path);
+}
+
+hd::SdfPath ViewerModel::addShadowFieldLight(const std::filesystem::path& lightLayer, const std::optional<hd::SdfPath>& path) {
+    if (path) requireNewPrimPath(scene(), *path);  // before the layer is read
+    return addSceneLight("ShadowField", newShadowFieldLight(readLightLayer(lightLayer), bounds_), path);
+}
+
+// At `path`, or under </_OpalView/Lights> as NAME1, NAME2, ...
+hd::SdfPath ViewerModel::addSceneLight(std::string name, scene::SceneLight light, const std::optional<hd::SdfPath>& path) {
     hd::SdfPath where;
     if (path) {
         requireNewPrimPath(scene(), *path);
         where = *path;
     } else {
-        std::string name = newLightKindName(kind);
-        name[0] = char(name[0] - 'a' + 'A');
         for (int n = 1; where.empty() || scene().lights.count(where); ++n)
             where = ViewerRoot + "/Lights/" + name + std::to_string(n);
     }
     recordUndo();
-    edited_->addLight(where, newLight(kind, bounds_));
+    edited_->addLight(where, std::move(light));
     selectedLight = where;
     return where;
 }

@@ -56,6 +56,10 @@ public:
     // Adds a light at `path` (a new prim path), or under </_OpalView/Lights> with a name of
     // its kind; selects it and returns its path. Throws opal::Error for a bad path.
     hd::SdfPath addLight(NewLightKind kind, const std::optional<hd::SdfPath>& path = std::nullopt);
+    // The same for a baked light layer (light_layer.h; named ShadowField1, ...); throws
+    // opal::Error naming the file.
+    hd::SdfPath addShadowFieldLight(const std::filesystem::path& lightLayer,
+                                    const std::optional<hd::SdfPath>& path = std::nullopt);
     void removeLight(const hd::SdfPath& path);
     // A new last element for the light's path; returns the new path (selected if it was).
     hd::SdfPath renameLight(const hd::SdfPath& path, std::string_view name);
@@ -117,6 +121,7 @@ public:
 
 private:
     OrbitCamera initialCamera() const;
+    hd::SdfPath addSceneLight(std::string name, scene::SceneLight light, const std::optional<hd::SdfPath>& path);
     RenderSettingChanges changedSettings() const;
     // Before a material or light edit: the state it changes goes on the undo stack.
     void recordUndo();
