@@ -30,8 +30,15 @@ inline std::string slurpFile(const std::filesystem::path& file) {
 }
 
 // A path as one word of a shell command line, and of an opal-view script.
-inline std::string shellWord(const std::filesystem::path& path) { return "'" + path.string() + "'"; }
-inline std::string scriptWord(const std::filesystem::path& path) { return "\"" + path.string() + "\""; }
+// (Appended, not `"'" + path.string() + "'"`: GCC 12 warns falsely on that concatenation.)
+inline std::string quotedWord(const std::filesystem::path& path, char quote) {
+    std::string word(1, quote);
+    word += path.string();
+    word += quote;
+    return word;
+}
+inline std::string shellWord(const std::filesystem::path& path) { return quotedWord(path, '\''); }
+inline std::string scriptWord(const std::filesystem::path& path) { return quotedWord(path, '"'); }
 
 // The script line that saves the EXR dir/name.
 inline std::string saveExr(const SceneDir& dir, const std::string& name) { return "save exr " + scriptWord(dir / name) + "\n"; }
