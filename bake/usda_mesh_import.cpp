@@ -332,7 +332,7 @@ std::pair<usda::Layer, std::optional<double>> readMeshLayer(const std::filesyste
     usda::Layer layer = usda::readUsdaFile(path);
     if (!layer.subLayers.empty()) {
         throw Error(path.string() + ": the layer has subLayers (@" + layer.subLayers.front() +
-                    "@), which Opal does not compose: flatten it first (usdcat --flatten)");
+                    "@), which opal-bake does not compose: flatten it first (usdcat --flatten)");
     }
     const std::optional<double> metersPerUnit = layer.metersPerUnit();
     if (metersPerUnit && !(*metersPerUnit > 0.0)) {

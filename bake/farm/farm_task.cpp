@@ -233,7 +233,7 @@ std::optional<std::filesystem::path> requestedReport(const FarmFolder& folder) {
 // The farm's part of the report: every stage's tasks, the merge (this process) last.
 void addFarmStats(const TaskContext& c, double mergeSeconds, BakeReport& report) {
     report.farmShards = c.spec.shards;
-    report.farmStages = gatherStageTasks(c.folder, c.spec.shards);
+    report.farmStages = gatherStageTasks(c.folder, c.spec.shards, report.warnings);
     report.farmStages.push_back({"merge", 1, 1, mergeSeconds, mergeSeconds, peakRssBytes()});
     report.peakRssBytes = 0;
     for (const StageTasks& s : report.farmStages) report.peakRssBytes = std::max(report.peakRssBytes, s.peakRssBytes);

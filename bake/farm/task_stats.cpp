@@ -33,7 +33,8 @@ std::optional<TaskStats> readTaskStats(const FarmFolder& folder, FarmStage stage
     return stats;
 }
 
-std::vector<StageTasks> gatherStageTasks(const FarmFolder& folder, std::uint32_t shards) {
+std::vector<StageTasks> gatherStageTasks(const FarmFolder& folder, std::uint32_t shards,
+                                         std::vector<std::string>& warnings) {
     std::vector<StageTasks> stages;
     for (FarmStage stage : kFarmStages) {
         if (stage == FarmStage::Merge) continue;
@@ -41,7 +42,12 @@ std::vector<StageTasks> gatherStageTasks(const FarmFolder& folder, std::uint32_t
         s.stage = std::string(stageName(stage));
         s.tasks = taskCount(stage, shards);
         for (std::uint32_t i = 0; i < s.tasks; ++i) {
-            const std::optional<TaskStats> t = readTaskStats(folder, stage, i);
+            std::optional<TaskStats> t;
+            try {
+                t = readTaskStats(folder, stage, i);
+            } catch (const Error& e) {
+                warnings.push_back(e.what());
+            }
             if (!t) continue;
             ++s.measured;
             s.secondsMax = std::max(s.secondsMax, t->seconds);

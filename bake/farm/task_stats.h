@@ -26,7 +26,10 @@ void writeTaskStats(const FarmFolder& folder, FarmStage stage, std::uint32_t ind
 std::optional<TaskStats> readTaskStats(const FarmFolder& folder, FarmStage stage, std::uint32_t index);
 
 // Per stage before the merge: its tasks' largest and summed times and largest peak RSS,
-// over the tasks that left stats (StageTasks::measured of StageTasks::tasks).
-std::vector<StageTasks> gatherStageTasks(const FarmFolder& folder, std::uint32_t shards);
+// over the tasks that left stats (StageTasks::measured of StageTasks::tasks). A malformed
+// stats file counts as unmeasured and adds a warning: the asset is written by then, and
+// a report is no reason to fail it.
+std::vector<StageTasks> gatherStageTasks(const FarmFolder& folder, std::uint32_t shards,
+                                         std::vector<std::string>& warnings);
 
 }  // namespace opal

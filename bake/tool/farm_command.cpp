@@ -129,6 +129,10 @@ int FarmCommand::bake(const BakeOptions& options, const std::string& stem, const
     std::error_code error;
     if (!builtinMesh(options.input) && !std::filesystem::is_regular_file(options.input, error))
         throw Error(options.input + ": no such input file");
+    // The merge writes the report once the asset is written: a folder that is not there
+    // would fail the bake at its very end.
+    if (!report.empty() && !std::filesystem::is_directory(std::filesystem::absolute(report).parent_path(), error))
+        throw Error(report.string() + ": --json: its folder does not exist");
     FarmSpec spec;
     spec.options = options;
     spec.stem = stem;

@@ -3,6 +3,7 @@
 #include "examples/opal-view/core/color_temperature.h"
 #include "examples/opal-view/core/edited_scene.h"
 #include "examples/opal-view/core/light_shape.h"
+#include "examples/scene/scene_lights.h"
 #include "schema/error.h"
 
 #include <imgui.h>
@@ -121,19 +122,19 @@ bool shapeSliders(hd::LightDesc& light) {
     }
     if (light.shapingConeAngle) {
         value = float(*light.shapingConeAngle);
-        if (ImGui::SliderFloat("cone", &value, 0.0f, 180.0f, "%.1f deg", ImGuiSliderFlags_AlwaysClamp)) {
+        if (ImGui::SliderFloat("cone", &value, 0.0f, float(scene::MaxConeAngle), "%.1f deg", ImGuiSliderFlags_AlwaysClamp)) {
             light.shapingConeAngle = value;
             changed = true;
         }
         value = float(light.shapingConeSoftness);
-        if (ImGui::SliderFloat("softness", &value, 0.0f, 1.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp)) {
+        if (ImGui::SliderFloat("softness", &value, 0.0f, float(scene::MaxConeSoftness), "%.2f", ImGuiSliderFlags_AlwaysClamp)) {
             light.shapingConeSoftness = value;
             changed = true;
         }
     }
     if (hasShapeParameter(light, "angle")) {
         value = float(light.angle);
-        if (ImGui::SliderFloat("angle", &value, 0.0f, 180.0f, "%.3g deg",
+        if (ImGui::SliderFloat("angle", &value, 0.0f, float(scene::MaxDistantAngle), "%.3g deg",
                                ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp)) {
             light.angle = value;
             changed = true;

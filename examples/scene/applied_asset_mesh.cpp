@@ -6,14 +6,6 @@
 namespace opal::scene {
 namespace {
 
-// What primToAsset reads of the prim (schema/asset/asset_layer.h) besides the mesh.
-constexpr std::string_view kAssetAttributes[] = {
-    "opal:eta",          "opal:sigmaA",          "opal:sigmaSPrime",        "opal:unitsPerMm",
-    "opal:range:sigmaSPrime", "opal:range:sigmaA", "opal:range:eta",        "opal:basis:K",
-    "opal:basis:eigenvalues", "opal:basis:radii",  "opal:basis:weights",    "opal:basis:values",
-    "opal:sidecar",      "opal:bakeId",          "points",                  "normals",
-    "faceVertexCounts",  "faceVertexIndices"};
-
 // UsdGeomMesh attributes a user's prim may author, which the asset's render mesh replaces.
 constexpr std::string_view kReplacedMeshAttributes[] = {
     "extent",          "doubleSided",        "holeIndices",       "creaseIndices",   "creaseLengths",
@@ -49,7 +41,7 @@ SceneMesh readAppliedAssetMesh(PrimReader& reader, const Imath::M44d& objectToWo
     const std::string stack = "is the over-layer sublayered first, the strongest?";
     requireToken(reader, "subdivisionScheme", "none", "it is already refined; " + stack);
     requireToken(reader, "orientation", "rightHanded", stack);
-    for (std::string_view name : kAssetAttributes) reader.ignore(name);
+    for (std::string_view name : assetPrimAttributes()) reader.ignore(name);
     for (std::string_view name : kReplacedMeshAttributes) reader.ignore(name);
     for (const usda::Property* p : reader.withPrefix("primvars:")) reader.ignore(usda::propertyName(*p));
     SceneMesh mesh;
@@ -60,6 +52,7 @@ SceneMesh readAppliedAssetMesh(PrimReader& reader, const Imath::M44d& objectToWo
     }
     const usda::Attribute* sidecar = reader.prim().findAttribute("opal:sidecar");
     mesh.assetFile = sidecar && sidecar->location.file ? std::filesystem::path(*sidecar->location.file) : layerFile;
+    mesh.applied = true;
     mesh.desc.transform = objectToWorld;
     mesh.where = reader.prim().location;
     return mesh;

@@ -25,13 +25,14 @@ std::string chainText(const std::vector<std::filesystem::path>& chain, const std
 void readStack(const std::filesystem::path& file, std::vector<std::filesystem::path>& chain,
                std::vector<StackLayer>& stack) {
     usda::Layer layer = usda::readUsdaFile(file);
-    chain.push_back(std::filesystem::absolute(file).lexically_normal());
+    // weakly_canonical: a cycle through a symbolic link is a cycle too.
+    chain.push_back(std::filesystem::weakly_canonical(std::filesystem::absolute(file)));
     const std::vector<std::string> subLayers = layer.subLayers;
     const usda::SourceLocation where = layer.location;
     stack.push_back({std::move(layer), file});
     for (const std::string& asset : subLayers) {
         const std::filesystem::path sub = resolveAssetPath(file, asset);
-        if (std::find(chain.begin(), chain.end(), sub) != chain.end())
+        if (std::find(chain.begin(), chain.end(), std::filesystem::weakly_canonical(sub)) != chain.end())
             throw usda::UsdaError(where, "subLayers: @" + asset + "@ makes a cycle (" + chainText(chain, sub) + ")");
         std::error_code error;
         if (!std::filesystem::is_regular_file(sub, error))

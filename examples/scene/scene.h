@@ -18,8 +18,11 @@ namespace opal::scene {
 
 struct SceneMesh {
     hd::MeshDesc desc;
-    std::filesystem::path assetFile;  // the referenced layer, resolved
-    usda::SourceLocation where;       // the prim
+    // The referenced asset layer, resolved; for a Mesh applying OpalSubsurfaceAPI through
+    // an over-layer (applied_asset_mesh.h), the layer that authored its sidecar.
+    std::filesystem::path assetFile;
+    usda::SourceLocation where;  // the prim
+    bool applied = false;        // the latter: not a prim referencing an asset layer
 };
 
 struct SceneMaterial {

@@ -42,13 +42,13 @@ std::optional<double> shapingInput(PrimReader& reader, std::string_view name, Bo
 void readSphere(PrimReader& reader, hd::LightDesc& desc) {
     desc.radius = reader.real("inputs:radius", Float, Bounds::atLeast(0.0)).value_or(desc.radius);
     desc.treatAsPoint = reader.get<Bool>("treatAsPoint").value_or(desc.treatAsPoint);
-    desc.shapingConeAngle = shapingInput(reader, "angle", Bounds::closed(0.0, 180.0));
-    desc.shapingConeSoftness = shapingInput(reader, "softness", Bounds::closed(0.0, 1.0)).value_or(0.0);
+    desc.shapingConeAngle = shapingInput(reader, "angle", Bounds::closed(0.0, MaxConeAngle));
+    desc.shapingConeSoftness = shapingInput(reader, "softness", Bounds::closed(0.0, MaxConeSoftness)).value_or(0.0);
     reader.requireFallback<Float>("inputs:shaping:focus", 0.0f, "shaping focus is not implemented");
 }
 
 void readDistant(PrimReader& reader, hd::LightDesc& desc) {
-    desc.angle = reader.real("inputs:angle", Float, Bounds::closed(0.0, 180.0)).value_or(desc.angle);
+    desc.angle = reader.real("inputs:angle", Float, Bounds::closed(0.0, MaxDistantAngle)).value_or(desc.angle);
     if (!reader.find("inputs:intensity", {Float})) desc.intensity = DistantLightIntensityFallback;
 }
 

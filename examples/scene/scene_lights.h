@@ -23,6 +23,10 @@
 
 namespace opal::scene {
 
+// The largest values the reader accepts for the shape inputs (from 0; radius has none):
+// a spot's cone angle and softness, a distant light's angular diameter (degrees).
+inline constexpr double MaxConeAngle = 180.0, MaxConeSoftness = 1.0, MaxDistantAngle = 180.0;
+
 // The delegate prim type and light kind of a USD light type; nullopt for other types.
 struct LightType {
     hd::Token primType;

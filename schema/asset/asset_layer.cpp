@@ -183,6 +183,15 @@ void writeAssetLayer(const std::filesystem::path& usdaPath, const TranslucentAss
     usda::writeUsdaFile(usdaPath, assetToLayer(asset, sidecarAssetPath));
 }
 
+std::span<const std::string_view> assetPrimAttributes() {
+    static constexpr std::string_view attributes[] = {
+        "opal:eta",         "opal:sigmaA",        "opal:sigmaSPrime",       "opal:unitsPerMm",   "opal:range:sigmaSPrime",
+        "opal:range:sigmaA", "opal:range:eta",    "opal:basis:K",           "opal:basis:eigenvalues",
+        "opal:basis:radii", "opal:basis:weights", "opal:basis:values",      "opal:sidecar",      kBakeIdAttribute,
+        "points",           "normals",            "faceVertexCounts",       "faceVertexIndices"};
+    return attributes;
+}
+
 std::string primToAsset(const usda::Prim& prim, TranslucentAsset& asset) {
     if (!prim.hasApiSchema(kSubsurfaceApi))
         throw Error(where(prim) + ": prim '" + prim.name + "' does not apply " + std::string(kSubsurfaceApi));

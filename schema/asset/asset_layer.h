@@ -8,10 +8,15 @@
 #include "schema/usd/usda_layer.h"
 
 #include <filesystem>
+#include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace opal {
+
+// The attributes primToAsset reads of an asset's prim (besides its type and API schema).
+std::span<const std::string_view> assetPrimAttributes();
 
 inline constexpr std::string_view kSubsurfaceApi = "OpalSubsurfaceAPI";
 // The bake's identifier (bake_id.h), written when asset.bake.identifier is set.

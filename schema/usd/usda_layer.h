@@ -168,7 +168,7 @@ struct Prim {
 struct Layer {
     std::string comment{};  // bare string at the top of the header metadata
     Dictionary metadata{};  // doc, defaultPrim, upAxis, metersPerUnit, customLayerData, ...
-    std::vector<std::string> subLayers{};  // asset paths; stored, never composed by Opal
+    std::vector<std::string> subLayers{};  // asset paths; composed by the scene reader only (examples/scene/layer_stack.h)
     std::vector<Prim> rootPrims{};
     SourceLocation location{};  // the file (line 0)
 

@@ -97,6 +97,12 @@ TEST(OpalBakeFarm, ABakeThePrepareTaskWouldRefuseFailsBeforeAnythingIsSetUp) {
         {(farm / "missing.obj").string(), "-o", (farm / "candle").string(), "--farm", "slurm", "--shards", "2"});
     EXPECT_EQ(input.exitCode, 1) << input.err;
     EXPECT_NE(input.err.find((farm / "missing.obj").string() + ": no such input file"), std::string::npos) << input.err;
+    // The merge would write the report only after the asset: refused before anything runs.
+    const std::string report = (farm / "nowhere" / "report.json").string();
+    const test::RunResult json = test::bakeWith(
+        with(test::kFarmOptions, {"-o", (farm / "candle").string(), "--farm", "local", "--json", report}));
+    EXPECT_EQ(json.exitCode, 1) << json.err;
+    EXPECT_NE(json.err.find(report + ": --json: its folder does not exist"), std::string::npos) << json.err;
     EXPECT_EQ(farm.list(), std::vector<std::string>{});  // no candle.farm, no lock, nothing submitted
 }
 

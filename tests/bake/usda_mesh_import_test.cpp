@@ -460,7 +460,7 @@ std::vector<BadLayer> badLayers() {
         {"references", layer("def Xform \"World\" (\n    references = @./cube.usda@\n)\n{\n}\n"),
          "</World>: references are not composed by Opal: flatten the layer first (usdcat --flatten)", "def Xform"},
         {"subLayers", layer(meshPrim("Cube", cube), "subLayers = [@./base.usda@]"),
-         "the layer has subLayers (@./base.usda@), which Opal does not compose: flatten it first (usdcat --flatten)", ""},
+         "the layer has subLayers (@./base.usda@), which opal-bake does not compose: flatten it first (usdcat --flatten)", ""},
         {"no Mesh prim", layer("def Xform \"World\"\n{\n    def Sphere \"Ball\"\n    {\n    }\n}\n"),
          "the layer has no Mesh prim to bake; not Mesh prims: </World/Ball> (Sphere)", ""},
         {"only an empty Mesh", layer("def Mesh \"Empty\"\n{\n    int[] faceVertexCounts = []\n    int[] faceVertexIndices = "

@@ -7,6 +7,7 @@
 #include "delegate/hd/render_to_convergence.h"
 #include "schema/error.h"
 #include "tests/relight/synthetic_asset.h"
+#include "tests/relight/translation.h"
 
 #include <algorithm>
 #include <cmath>
@@ -89,11 +90,6 @@ inline std::shared_ptr<const TranslucentAsset> sharedSphere() {
     return sphere;
 }
 
-inline Imath::M44d translation(double x, double y, double z) {
-    Imath::M44d m;
-    m.setTranslation(Imath::V3d(x, y, z));
-    return m;
-}
 
 inline hd::LightDesc pointLight(const Imath::V3d& at, double intensity, Rgb color = {1.0, 1.0, 1.0}) {
     hd::LightDesc d;

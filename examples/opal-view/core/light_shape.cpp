@@ -1,5 +1,6 @@
 #include "examples/opal-view/core/light_shape.h"
 
+#include "examples/scene/scene_lights.h"
 #include "schema/error.h"
 
 #include <limits>
@@ -19,8 +20,9 @@ struct Range {
 
 Range rangeOf(std::string_view parameter) {
     if (parameter == "radius") return {0.0, std::numeric_limits<double>::max(), ""};
-    if (parameter == "softness") return {0.0, 1.0, ""};
-    return {0.0, 180.0, " degrees"};  // cone, angle
+    if (parameter == "softness") return {0.0, scene::MaxConeSoftness, ""};
+    if (parameter == "cone") return {0.0, scene::MaxConeAngle, " degrees"};
+    return {0.0, scene::MaxDistantAngle, " degrees"};
 }
 
 // Which lights have it, for the refusal.

@@ -74,7 +74,7 @@ SceneDocument loadDocument(const std::filesystem::path& file, scene::AssetCache&
     document.assetOnly = isAssetLayer(file);
     document.scene = document.assetOnly ? stagedAsset(file, assets) : scene::readScene(file, assets);
     if (document.scene.meshes.empty())
-        throw Error(file.string() + ": the scene has no translucent mesh (a prim referencing a baked asset) to look at");
+        throw Error(file.string() + ": the scene has no translucent mesh (a prim referencing a baked asset, or a Mesh applying OpalSubsurfaceAPI) to look at");
     if (!document.assetOnly && usesViewerRoot(document.scene))
         throw Error(file.string() + ": the scene has prims under <" + ViewerRoot + ">, which the viewer needs for its own");
     document.sceneCamera = chooseSceneCamera(document.scene);

@@ -92,6 +92,11 @@ void addFloat(usda::Prim& prim, const char* name, double value) {
 
 void writeMesh(usda::Layer& layer, const PathMap& map, const hd::SdfPath& path, const scene::SceneMesh& mesh,
                const std::filesystem::path& target) {
+    // A reference to an over-layer would not load (its prims are overs, it names no
+    // defaultPrim); writing the layer stack back is not done yet.
+    if (mesh.applied)
+        throw Error(target.string() + ": cannot save " + path + ": its asset is applied through an over-layer "
+                    "(subLayers), which the saved layer cannot yet reproduce");
     usda::Prim& prim = primAt(layer, map(path));
     prim.references.prepended.push_back({anchored(mesh.assetFile, target), "", {}});
     if (!mesh.desc.material.empty()) {

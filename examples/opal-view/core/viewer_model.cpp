@@ -62,6 +62,7 @@ void ViewerModel::open(const std::filesystem::path& file) {
     merging_ = gestureOpen_ = false;
     savedRevision_ = edited_->revision();
     timeCode_ = document_->scene.timeCode;
+    timeSource_ = file;
     playing = false;
     session_ = std::make_unique<RenderSession>(delegate_, std::move(scene), viewport_);
     submitted_ = viewport_;
@@ -72,7 +73,9 @@ void ViewerModel::setTime(double timeCode) {
     if (!std::isfinite(timeCode)) throw Error("the time code is not finite");
     if (timeCode == timeCode_) return;
     std::optional<scene::Scene> atTime;
-    if (!scene().timeVarying.empty()) atTime = scene::readScene(file_, assets_, timeCode);
+    // The whole file at the new time (lights' layers included; assets come from the cache):
+    // a few milliseconds for a scene, once per interface frame while playing.
+    if (!scene().timeVarying.empty()) atTime = scene::readScene(timeSource_, assets_, timeCode);
     edited_->setTime(atTime ? &*atTime : nullptr, timeCode);
     timeCode_ = timeCode;
 }

@@ -141,6 +141,7 @@ private:
     bool merging_ = false, gestureOpen_ = false;
     long savedRevision_ = 0;
     double timeCode_ = 0.0;
+    std::filesystem::path timeSource_;  // the file opened: what time re-reads (a save writes no samples)
     RenderSettingChanges pendingSettings_;  // for the next submission
     std::unique_ptr<RenderSession> session_;  // last: goes first
 };
