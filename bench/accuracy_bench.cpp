@@ -218,10 +218,10 @@ Json measureImage(const Subject& s, const std::string& materialName, const std::
     ++tally.images;
     tally.passed += missed.empty();
     char row[256];
-    std::snprintf(row, sizeof row, "%-10s %7zu %-8s %-11s %7zu %9.4f %8.4f %8.4f %8.4f %8.4f %9.4f  %s",
+    std::snprintf(row, sizeof row, "%-10s %7zu %-8s %-11s %7zu %9.4f %8.4f %8.4f %8.4f %8.4f %9.4f %9.1e  %s",
                   s.label.c_str(), s.asset->samples.size(), materialName.c_str(), lightCase.c_str(), a.pixels,
                   a.relativeRmse, a.luminance.median, a.luminance.p95, a.darkerHalf.p95, a.chromaticity.p95,
-                  a.negativeFraction, missed.empty() ? "PASS" : "FAIL");
+                  a.negativeFraction, a.deepestNegative, missed.empty() ? "PASS" : "FAIL");
     tally.rows.push_back(row);
     std::printf("%s\n", row);
     std::fflush(stdout);
@@ -237,6 +237,7 @@ Json measureImage(const Subject& s, const std::string& materialName, const std::
               {"darker_half_luminance_error", percentilesJson(a.darkerHalf)},
               {"chromaticity_error", percentilesJson(a.chromaticity)},
               {"negative_fraction", a.negativeFraction},
+              {"deepest_negative", a.deepestNegative},
               {"pass", missed.empty()},
               {"missed", missed}};
     if (!options.outputDir.empty()) {
@@ -268,8 +269,8 @@ std::vector<std::string> casesFor(const Subject& s, const Options& options) {
 }
 
 void printHeader() {
-    std::printf("\n%-10s %7s %-8s %-11s %7s %9s %8s %8s %8s %8s %9s  %s\n", "mesh", "samples", "material", "case",
-                "pixels", "rel.RMSE", "Y med", "Y p95", "dark p95", "chr p95", "negative", "targets");
+    std::printf("\n%-10s %7s %-8s %-11s %7s %9s %8s %8s %8s %8s %9s %9s  %s\n", "mesh", "samples", "material", "case",
+                "pixels", "rel.RMSE", "Y med", "Y p95", "dark p95", "chr p95", "negative", "deepest", "targets");
 }
 
 void measureSubject(const Subject& s, const Options& options, Json& images, Tally& tally) {

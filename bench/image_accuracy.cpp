@@ -43,6 +43,7 @@ ImageAccuracy measureAccuracy(std::span<const float> engine, std::span<const flo
     ImageAccuracy result;
     double differenceSquared = 0.0, referenceSquared = 0.0;
     std::size_t negative = 0;
+    double lowest = 0.0;
     std::vector<std::size_t> asset;
     std::vector<double> referenceY;
     for (std::size_t p = 0; p < mask.size(); ++p) {
@@ -51,6 +52,7 @@ ImageAccuracy measureAccuracy(std::span<const float> engine, std::span<const flo
         differenceSquared += (a - b).length2();
         referenceSquared += b.length2();
         negative += a.x < 0.0 || a.y < 0.0 || a.z < 0.0;
+        lowest = std::min({lowest, a.x, a.y, a.z});
         asset.push_back(p);
         referenceY.push_back(b.dot(luminance));
     }
@@ -60,7 +62,9 @@ ImageAccuracy measureAccuracy(std::span<const float> engine, std::span<const flo
     result.negativeFraction = double(negative) / double(asset.size());
 
     std::vector<double> sortedY = referenceY;
-    const double threshold = 0.01 * percentile(sortedY, 0.99);
+    const double p99 = percentile(sortedY, 0.99);
+    const double threshold = 0.01 * p99;
+    result.deepestNegative = p99 > 0.0 ? lowest / p99 : lowest;
     std::vector<std::pair<double, std::size_t>> bright;  // (reference Y, pixel)
     for (std::size_t i = 0; i < asset.size(); ++i)
         if (referenceY[i] >= threshold && referenceY[i] > 0.0) bright.emplace_back(referenceY[i], asset[i]);

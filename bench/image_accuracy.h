@@ -7,7 +7,9 @@
 //                  darker half of those pixels (by reference Y)
 //   chromaticity   the L1 distance between (r, g) / (r + g + b) of engine and reference,
 //                  same pixels: median and 95th percentile
-//   negative       the fraction of the asset's pixels with a channel below 0 in the engine
+//   negative       the fraction of the asset's pixels with a channel below 0 in the engine,
+//                  and the deepest such channel as a fraction of the 99th percentile of the
+//                  asset's reference Y (how far below zero, next to how often)
 // Y uses the working space's luminance weights (ACEScg's by default).
 #pragma once
 
@@ -30,6 +32,7 @@ struct ImageAccuracy {
     double relativeRmse = 0.0;
     Percentiles luminance, darkerHalf, chromaticity;
     double negativeFraction = 0.0;
+    double deepestNegative = 0.0;  // min(0, lowest engine channel) / p99 of reference Y
 };
 
 // engine, reference: RGB per pixel (3 floats each, same size); mask: 1 where the pixel
