@@ -117,6 +117,7 @@ int main(int argc, char** argv) {
         if (!subcommand && options.input.empty()) throw CLI::RequiredError("input");
         if (!subcommand && outStem.empty()) throw CLI::RequiredError("--output");
         farm.validate();
+        batch.validate();
         if (!options.applyTo.empty() && (farm.farmBake() || farm.standalone() || light.chosen() || batch.chosen()))
             throw CLI::ValidationError("--apply-to", "bakes on this machine only (not with --farm, light or batch)");
         if (!range.empty() && range != "presets") options.range = parseRange(range);
