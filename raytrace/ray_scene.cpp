@@ -1,5 +1,6 @@
 #include "raytrace/ray_scene.h"
 
+#include "raytrace/embree_device_config.h"
 #include "schema/asset/fan_triangulation.h"
 #include "schema/error.h"
 
@@ -123,7 +124,7 @@ std::vector<Imath::V3f> worldPoints(const RenderMesh& mesh, const Imath::M44d& o
 }  // namespace
 
 RayScene::RayScene(BuildQuality quality) {
-    device_ = rtcNewDevice(nullptr);
+    device_ = rtcNewDevice(embreeDeviceConfig().c_str());
     if (!device_) embreeFailure(nullptr, "creating a device");
     scene_ = rtcNewScene(device_);
     if (!scene_) embreeFailure(device_, "creating a scene");

@@ -26,16 +26,20 @@ std::vector<char*> pointers(std::vector<std::string>& strings) {
     return out;
 }
 
-ChildExit reap(pid_t pid) {
+ChildExit exitOf(int status, const rusage& usage) {
     ChildExit e;
-    int status = 0;
-    rusage usage{};
-    while (wait4(pid, &status, 0, &usage) < 0 && errno == EINTR) {
-    }
     if (WIFEXITED(status)) e.exitCode = WEXITSTATUS(status);
     if (WIFSIGNALED(status)) e.signal = WTERMSIG(status);
     e.peakRssBytes = std::uint64_t(usage.ru_maxrss) * 1024;
     return e;
+}
+
+ChildExit reap(pid_t pid) {
+    int status = 0;
+    rusage usage{};
+    while (wait4(pid, &status, 0, &usage) < 0 && errno == EINTR) {
+    }
+    return exitOf(status, usage);
 }
 
 // Reads both pipes until both close.
@@ -103,8 +107,8 @@ ChildExit runCommand(const std::vector<std::string>& args) {
     return result;
 }
 
-ChildExit runLogged(const std::filesystem::path& program, const std::vector<std::string>& args,
-                    const std::filesystem::path& log, const std::vector<std::string>& environment) {
+pid_t startLogged(const std::filesystem::path& program, const std::vector<std::string>& args,
+                  const std::filesystem::path& log, const std::vector<std::string>& environment) {
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
     posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
@@ -126,7 +130,21 @@ ChildExit runLogged(const std::filesystem::path& program, const std::vector<std:
     const int rc = posix_spawn(&pid, program.c_str(), &actions, nullptr, argv.data(), envp.data());
     posix_spawn_file_actions_destroy(&actions);
     if (rc != 0) throw Error(program.string() + ": cannot run it: " + std::strerror(rc));
-    return reap(pid);
+    return pid;
+}
+
+ChildExit runLogged(const std::filesystem::path& program, const std::vector<std::string>& args,
+                    const std::filesystem::path& log, const std::vector<std::string>& environment) {
+    return reap(startLogged(program, args, log, environment));
+}
+
+EndedChild waitForAnyChild() {
+    int status = 0;
+    rusage usage{};
+    const pid_t pid = wait4(-1, &status, 0, &usage);
+    if (pid < 0 && errno == EINTR) return {};
+    if (pid < 0) throw Error(std::string("waiting for a child process: ") + std::strerror(errno));
+    return {pid, exitOf(status, usage)};
 }
 
 std::filesystem::path selfExecutable() { return std::filesystem::read_symlink("/proc/self/exe"); }

@@ -2,6 +2,8 @@
 // task's log) and Slurm's commands (sbatch, squeue, scancel, output captured).
 #pragma once
 
+#include <sys/types.h>
+
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -27,6 +29,18 @@ ChildExit runCommand(const std::vector<std::string>& args);
 // environment extended by `environment` ("NAME=value").
 ChildExit runLogged(const std::filesystem::path& program, const std::vector<std::string>& args,
                     const std::filesystem::path& log, const std::vector<std::string>& environment);
+
+// runLogged without the wait: starts the child and returns its pid (reap it with
+// waitForAnyChild), for a batch that keeps several bakes running at once.
+pid_t startLogged(const std::filesystem::path& program, const std::vector<std::string>& args,
+                  const std::filesystem::path& log, const std::vector<std::string>& environment);
+
+struct EndedChild {
+    pid_t pid = 0;  // 0: the wait was interrupted by a signal, nothing ended
+    ChildExit exit;
+};
+// Waits until a child of this process ends. Throws opal::Error when there is none.
+EndedChild waitForAnyChild();
 
 // The absolute path of the running opal-bake (for tasks a scheduler starts elsewhere).
 std::filesystem::path selfExecutable();

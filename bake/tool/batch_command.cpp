@@ -8,11 +8,15 @@
 
 #include <nlohmann/json.hpp>
 
+#include <signal.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <deque>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <sstream>
 
 namespace opal {
@@ -74,17 +78,20 @@ bool unchanged(const BatchEntry& e, std::uint64_t key) {
     return readFile(withSuffix(e.output, ".batch")) == formatBakeId(key) + "\n";
 }
 
-// Runs opal-bake for one entry, its output to STEM.batch.log (this attempt's only, since
-// the summary quotes its last line); returns the exit code, 128 + the signal that ended it.
-int bakeOnce(const BatchEntry& e) {
+// Starts opal-bake for one entry (with `farmArgs`), its output to STEM.batch.log (this
+// attempt's only, since the summary quotes its last line); returns its pid.
+pid_t startBake(const BatchEntry& e, const std::vector<std::string>& farmArgs) {
     std::vector<std::string> args = {e.input, "-o", e.output.string(), "--quiet"};
+    args.insert(args.end(), farmArgs.begin(), farmArgs.end());
     args.insert(args.end(), e.args.begin(), e.args.end());
     const std::filesystem::path log = withSuffix(e.output, ".batch.log");
     std::error_code ignored;
     std::filesystem::remove(log, ignored);
-    const ChildExit exit = runLogged(selfExecutable(), args, log, {});
-    return exit.exitCode >= 0 ? exit.exitCode : 128 + exit.signal;
+    return startLogged(selfExecutable(), args, log, {});
 }
+
+// The exit code, 128 + the signal that ended it.
+int exitCode(const ChildExit& exit) { return exit.exitCode >= 0 ? exit.exitCode : 128 + exit.signal; }
 
 std::string lastLine(const std::filesystem::path& file) {
     std::istringstream text(readFile(file));
@@ -96,46 +103,128 @@ std::string lastLine(const std::filesystem::path& file) {
 
 bool interrupted(int code) { return code == 130 || code == 143; }
 
-Outcome bakeEntry(const BatchEntry& e, std::uint64_t tool) {
-    Outcome o;
-    o.name = e.output.string();
-    const auto start = std::chrono::steady_clock::now();
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+// An asset to bake (or skipped or failed before any attempt, `done`).
+struct Pending {
+    Outcome outcome;
     std::uint64_t key = 0;
+    Clock::time_point start;
+    bool done = false;
+};
+
+Pending prepare(const BatchEntry& e, std::uint64_t tool) {
+    Pending p;
+    p.outcome.name = e.output.string();
+    p.start = Clock::now();
     try {
-        key = bakeKey(tool, e);
+        p.key = bakeKey(tool, e);
         std::filesystem::create_directories(e.output.parent_path());
     } catch (const std::exception& error) {
-        o.error = error.what();
-        return o;
+        p.outcome.error = error.what();
+        p.done = true;
+        return p;
     }
-    if (unchanged(e, key)) {
-        o.status = Status::Skipped;
+    if (unchanged(e, p.key)) {
+        p.outcome.status = Status::Skipped;
+        p.done = true;
     } else {
         std::filesystem::remove(withSuffix(e.output, ".batch"));
-        int code = 1;
-        for (o.attempts = 1; o.attempts <= 2; ++o.attempts) {
-            try {
-                code = bakeOnce(e);
-            } catch (const Error& error) {
-                o.error = error.what();
-                return o;
-            }
-            if (code == 0 || interrupted(code)) break;
-        }
-        o.attempts = std::min(o.attempts, 2);
-        if (interrupted(code)) throw Cancelled();
-        if (code != 0) {
-            o.error = "exit " + std::to_string(code) + ": " + lastLine(withSuffix(e.output, ".batch.log"));
-        } else {
-            std::ofstream(withSuffix(e.output, ".batch")) << formatBakeId(key) << '\n';
-            o.status = Status::Baked;
-        }
     }
-    o.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return p;
+}
+
+// The asset's figures once it is baked, skipped or failed for good.
+void finish(const BatchEntry& e, Pending& p) {
+    Outcome& o = p.outcome;
+    if (o.status == Status::Baked) std::ofstream(withSuffix(e.output, ".batch")) << formatBakeId(p.key) << '\n';
+    o.seconds = secondsSince(p.start);
     std::error_code error;
     if (o.status != Status::Failed) o.sidecarBytes = std::filesystem::file_size(sidecarOf(e.output), error);
-    return o;
+    p.done = true;
 }
+
+// Runs the pending assets' bakes, at most `slots` at once, each retried once; a Slurm
+// batch runs them all at once (each process mostly waits for its jobs). On SIGINT/SIGTERM
+// the running bakes are stopped (SIGTERM) and Cancelled is thrown.
+class BakeQueue {
+public:
+    BakeQueue(const std::vector<BatchEntry>& entries, std::vector<Pending>& pending,
+              std::vector<std::string> farmArgs, std::size_t slots, bool quiet)
+        : entries_(entries), pending_(pending), farmArgs_(std::move(farmArgs)), slots_(slots), quiet_(quiet) {
+        for (std::size_t i = 0; i < pending_.size(); ++i)
+            if (!pending_[i].done) waiting_.push_back(i);
+    }
+
+    void run(const CancelToken& cancel) {
+        while (!waiting_.empty() || !running_.empty()) {
+            if (running_.empty()) cancel.throwIfRequested();
+            while (!waiting_.empty() && running_.size() < slots_) {
+                const std::size_t i = waiting_.front();
+                waiting_.pop_front();
+                start(i);
+            }
+            if (running_.empty()) continue;
+            const EndedChild ended = waitForAnyChild();
+            if (cancel.requested()) {
+                stopAll();
+                throw Cancelled();
+            }
+            if (ended.pid == 0) continue;
+            const auto it = running_.find(ended.pid);
+            if (it == running_.end()) continue;
+            const std::size_t i = it->second;
+            running_.erase(it);
+            onEnded(i, exitCode(ended.exit));
+        }
+    }
+
+private:
+    void start(std::size_t i) {
+        Outcome& o = pending_[i].outcome;
+        ++o.attempts;
+        if (!quiet_) std::fprintf(stderr, "opal-bake batch: %s\n", o.name.c_str());
+        try {
+            running_.emplace(startBake(entries_[i], farmArgs_), i);
+        } catch (const Error& error) {
+            o.error = error.what();
+            finish(entries_[i], pending_[i]);
+        }
+    }
+
+    void onEnded(std::size_t i, int code) {
+        if (interrupted(code)) {
+            stopAll();
+            throw Cancelled();
+        }
+        Pending& p = pending_[i];
+        if (code != 0 && p.outcome.attempts < 2) {  // retried at once: a farm bake resumes
+            waiting_.push_front(i);
+            return;
+        }
+        if (code != 0)
+            p.outcome.error = "exit " + std::to_string(code) + ": " + lastLine(withSuffix(entries_[i].output, ".batch.log"));
+        else
+            p.outcome.status = Status::Baked;
+        finish(entries_[i], p);
+    }
+
+    void stopAll() {
+        for (const auto& [pid, i] : running_) kill(pid, SIGTERM);
+        while (!running_.empty())
+            if (const EndedChild e = waitForAnyChild(); e.pid != 0) running_.erase(e.pid);
+    }
+
+    const std::vector<BatchEntry>& entries_;
+    std::vector<Pending>& pending_;
+    const std::vector<std::string> farmArgs_;
+    const std::size_t slots_;
+    const bool quiet_;
+    std::deque<std::size_t> waiting_;
+    std::map<pid_t, std::size_t> running_;
+};
 
 void printTable(std::vector<Outcome> outcomes, std::ostream& out) {
     std::stable_sort(outcomes.begin(), outcomes.end(),
@@ -174,6 +263,31 @@ BatchCommand::BatchCommand(CLI::App& app) {
         ->required();
     command_->add_option("--json", json_, "write the summary as JSON to this file");
     command_->add_flag("-q,--quiet", quiet_, "no table on stdout");
+    command_->add_option("--farm", farm_, "bake each asset as farm tasks: local (here, one asset at a time) or slurm "
+                                          "(every asset submitted at once)")
+        ->check(CLI::IsMember({"local", "slurm"}));
+    command_->add_option("--shards", shards_, "farm: each asset's --shards")->check(CLI::Range(1u, 4096u));
+    command_->add_option("--partition", partition_, "farm slurm: each asset's --partition");
+    command_->add_option("--mem", memory_, "farm slurm: each asset's --mem");
+    command_->add_option("--time", time_, "farm slurm: each asset's --time");
+}
+
+void BatchCommand::validate() const {
+    if (!chosen()) return;
+    if (farm_.empty() && shards_)
+        throw CLI::ValidationError("batch --shards", "is for a batch with --farm local or slurm");
+    if (farm_ != "slurm" && (!partition_.empty() || !memory_.empty() || !time_.empty()))
+        throw CLI::ValidationError("batch --farm local", "--partition, --mem and --time are for --farm slurm");
+}
+
+std::vector<std::string> BatchCommand::farmArgs() const {
+    if (farm_.empty()) return {};
+    std::vector<std::string> args = {"--farm", farm_};
+    if (shards_) args.insert(args.end(), {"--shards", std::to_string(*shards_)});
+    if (farm_ == "slurm") args.push_back("--wait");
+    for (const auto& [option, value] : {std::pair{"--partition", partition_}, {"--mem", memory_}, {"--time", time_}})
+        if (!value.empty()) args.insert(args.end(), {option, value});
+    return args;
 }
 
 int BatchCommand::run(const CancelToken& cancel) const {
@@ -186,12 +300,12 @@ int BatchCommand::run(const CancelToken& cancel) const {
     }
     const std::string self = readFile("/proc/self/exe");
     const std::uint64_t tool = xxh64(std::as_bytes(std::span(self.data(), self.size())));
+    std::vector<Pending> pending;
+    for (const BatchEntry& e : entries) pending.push_back(prepare(e, tool));
+    const std::size_t slots = farm_ == "slurm" ? entries.size() : 1;
+    BakeQueue(entries, pending, farmArgs(), slots, quiet_).run(cancel);
     std::vector<Outcome> outcomes;
-    for (const BatchEntry& e : entries) {
-        cancel.throwIfRequested();
-        if (!quiet_) std::fprintf(stderr, "opal-bake batch: %s\n", e.output.string().c_str());
-        outcomes.push_back(bakeEntry(e, tool));
-    }
+    for (const Pending& p : pending) outcomes.push_back(p.outcome);
     if (!json_.empty()) writeJson(json_, outcomes);
     if (!quiet_) printTable(outcomes, std::cout);
     const bool failed = std::any_of(outcomes.begin(), outcomes.end(), [](const Outcome& o) { return o.status == Status::Failed; });

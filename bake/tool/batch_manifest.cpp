@@ -33,7 +33,8 @@ std::vector<std::string> argsOf(const std::filesystem::path& manifest, const Jso
         const Json& arg = (*it)[i];
         if (!arg.is_string()) fail(manifest, where + ".args[" + std::to_string(i) + "]", "not a string");
         const std::string text = arg.get<std::string>();
-        for (const char* own : {"-o", "--output", "--json", "-q", "--quiet"})
+        for (const char* own : {"-o", "--output", "--json", "-q", "--quiet", "--farm", "--shards", "--partition",
+                                "--mem", "--time", "--wait"})
             if (text == own || text.starts_with(std::string(own) + "="))
                 fail(manifest, where + ".args[" + std::to_string(i) + "]", "'" + text + "' is set by the batch");
         args.push_back(text);

@@ -2,7 +2,7 @@
 //   {"assets": [{"input": "rock.obj", "output": "baked/rock", "args": ["--samples", "4096"]}, ...]}
 // `input` is a mesh file or a built-in mesh (builtin:NAME), `output` the asset's stem; both
 // relative to the manifest's folder. `args` (optional) are opal-bake's options for that asset
-// (not -o, --json or --quiet, which the batch sets). Every error names the manifest and the
+// (not -o, --json, --quiet or the farm's options, which the batch sets). Every error names the manifest and the
 // entry ("assets[3].output").
 #pragma once
 

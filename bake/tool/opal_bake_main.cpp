@@ -6,13 +6,16 @@
 // INPUT.usda --apply-to /Path/To/Mesh -o OUT_STEM: that one prim, written as an over-layer on
 // it (schema/asset/asset_over_layer.h). Exit codes: 0
 // done, 1 error (including another bake writing the same stem), 2 bad arguments, 130/143
-// interrupted by SIGINT/SIGTERM (nothing written; a previous asset stays intact).
+// interrupted by SIGINT/SIGTERM (nothing written; a previous asset stays intact). The bytes
+// do not depend on the processor (bake/tool/baseline_math.h, raytrace/embree_device_config.h).
 #include "bake/bake_pipeline.h"
 #include "bake/bake_report.h"
 #include "bake/procedural_mesh.h"
+#include "bake/tool/baseline_math.h"
 #include "bake/tool/batch_command.h"
 #include "bake/tool/farm_command.h"
 #include "bake/tool/light_command.h"
+#include "schema/error.h"
 
 #include <CLI/CLI.hpp>
 
@@ -48,6 +51,12 @@ opal::EditableRange parseRange(const std::string& text) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    try {
+        opal::runOnBaselineMath(argv);  // may restart the process: before anything else
+    } catch (const opal::Error& e) {
+        std::fprintf(stderr, "opal-bake: error: %s\n", e.what());
+        return 1;
+    }
     CLI::App app{"opal-bake: bake a mesh into a relightable translucent Opal asset"};
     opal::BakeOptions options;
     std::string outStem, jsonPath, range;
@@ -108,6 +117,7 @@ int main(int argc, char** argv) {
         if (!subcommand && options.input.empty()) throw CLI::RequiredError("input");
         if (!subcommand && outStem.empty()) throw CLI::RequiredError("--output");
         farm.validate();
+        batch.validate();
         if (!options.applyTo.empty() && (farm.farmBake() || farm.standalone() || light.chosen() || batch.chosen()))
             throw CLI::ValidationError("--apply-to", "bakes on this machine only (not with --farm, light or batch)");
         if (!range.empty() && range != "presets") options.range = parseRange(range);
