@@ -136,6 +136,7 @@ Material materialNamed(const std::string& name, const TranslucentAsset& asset) {
 // The subsurface (RGB) and primId AOVs of one view, converged.
 struct Render {
     std::vector<float> subsurface, primId;
+    CommitStats totals;  // the engine's zeroed noise among them (docs/ARCHITECTURE.md#nonnegative-radiance)
 };
 
 RelightScene::Key keyOf(const std::string& lightCase) {
@@ -157,7 +158,9 @@ Render render(const std::shared_ptr<const TranslucentAsset>& asset, const Materi
     hd::renderToConvergence(delegate, *pass, {RelightScene::CameraPath, kWidth, kHeight},
                             {{"subsurface", &subsurface}, {"primId", &primId}});
     for (const std::string& w : delegate.takeWarnings()) std::printf("  warning: %s\n", w.c_str());
-    return {{subsurface.data().begin(), subsurface.data().end()}, {primId.data().begin(), primId.data().end()}};
+    return {{subsurface.data().begin(), subsurface.data().end()},
+            {primId.data().begin(), primId.data().end()},
+            delegate.totals()};
 }
 
 // |Y(a) - Y(b)| / Y(b) as grey, 0 -> black and 5% or more -> white; pixels off the asset blue.
@@ -218,10 +221,11 @@ Json measureImage(const Subject& s, const std::string& materialName, const std::
     ++tally.images;
     tally.passed += missed.empty();
     char row[256];
-    std::snprintf(row, sizeof row, "%-10s %7zu %-8s %-11s %7zu %9.4f %8.4f %8.4f %8.4f %8.4f %9.4f %9.1e  %s",
+    std::snprintf(row, sizeof row, "%-10s %7zu %-8s %-11s %7zu %9.4f %8.4f %8.4f %8.4f %8.4f %9.4f %9.1e %9.1e  %s",
                   s.label.c_str(), s.asset->samples.size(), materialName.c_str(), lightCase.c_str(), a.pixels,
                   a.relativeRmse, a.luminance.median, a.luminance.p95, a.darkerHalf.p95, a.chromaticity.p95,
-                  a.negativeFraction, a.deepestNegative, missed.empty() ? "PASS" : "FAIL");
+                  a.negativeFraction, a.deepestNegative, engine.totals.deepestProjected,
+                  missed.empty() ? "PASS" : "FAIL");
     tally.rows.push_back(row);
     std::printf("%s\n", row);
     std::fflush(stdout);
@@ -238,6 +242,8 @@ Json measureImage(const Subject& s, const std::string& materialName, const std::
               {"chromaticity_error", percentilesJson(a.chromaticity)},
               {"negative_fraction", a.negativeFraction},
               {"deepest_negative", a.deepestNegative},
+              {"engine_zeroed_values", engine.totals.projectedValues},
+              {"engine_deepest_zeroed", engine.totals.deepestProjected},
               {"pass", missed.empty()},
               {"missed", missed}};
     if (!options.outputDir.empty()) {
@@ -269,8 +275,9 @@ std::vector<std::string> casesFor(const Subject& s, const Options& options) {
 }
 
 void printHeader() {
-    std::printf("\n%-10s %7s %-8s %-11s %7s %9s %8s %8s %8s %8s %9s %9s  %s\n", "mesh", "samples", "material", "case",
-                "pixels", "rel.RMSE", "Y med", "Y p95", "dark p95", "chr p95", "negative", "deepest", "targets");
+    std::printf("\n%-10s %7s %-8s %-11s %7s %9s %8s %8s %8s %8s %9s %9s %9s  %s\n", "mesh", "samples", "material",
+                "case", "pixels", "rel.RMSE", "Y med", "Y p95", "dark p95", "chr p95", "negative", "deepest", "zeroed",
+                "targets");
 }
 
 void measureSubject(const Subject& s, const Options& options, Json& images, Tally& tally) {

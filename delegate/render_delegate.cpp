@@ -99,6 +99,10 @@ std::map<hd::Token, hd::Value> OpalRenderDelegate::renderStats() const {
     stats["productsMs"] = lastCommit_.productsMs;
     stats["materialMs"] = lastCommit_.materialMs;
     stats["referenceMs"] = lastCommit_.referenceMs;
+    stats["projectedValues"] = saturated(lastCommit_.projectedValues);
+    stats["deepestProjected"] = lastCommit_.deepestProjected;
+    stats["projectedIrradiance"] = saturated(lastCommit_.projectedIrradiance);
+    stats["deepestIrradiance"] = lastCommit_.deepestIrradiance;
     stats["rayScenes"] = saturated(totals_.rayScenes);
     stats["lightEvaluations"] = saturated(totals_.lightEvaluations);
     stats["irradianceProducts"] = saturated(totals_.irradianceProducts);

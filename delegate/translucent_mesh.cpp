@@ -4,6 +4,7 @@
 #include "delegate/relight/stopwatch.h"
 #include "schema/error.h"
 
+#include <algorithm>
 
 namespace opal {
 
@@ -189,6 +190,10 @@ void TranslucentMesh::updateRadiance(bool reference, int primId, CommitStats& st
             stats.productsMs += clock.ms();
         }
         const Stopwatch clock;
+        stats.projectedValues += engine_->radianceNoise().values;
+        stats.deepestProjected = std::min(stats.deepestProjected, engine_->radianceNoise().deepest);
+        stats.projectedIrradiance += engine_->irradianceNoise().values;
+        stats.deepestIrradiance = std::min(stats.deepestIrradiance, engine_->irradianceNoise().deepest);
         shading->vertexRadiance = engine_->sharedVertexRadiance();
         shading->eta = engine_->material().eta;
         const IrradianceKey irradianceKey{false, momentsVersion_, shading->eta};

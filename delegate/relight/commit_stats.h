@@ -4,6 +4,7 @@
 // (delegate/DELEGATE.md#render-stats).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 
 namespace opal {
@@ -24,6 +25,11 @@ struct CommitStats {
     std::uint64_t materialUpdates = 0;     // RelightEngine::setMaterial calls
     std::uint64_t referenceGathers = 0;    // exact O(N^2) gathers of one mesh
 
+    // Values the engines set to zero (RelightEngine::radianceNoise, irradianceNoise), and
+    // the deepest as a fraction of its mesh's highest L or E (<= 0), over the meshes relit.
+    std::uint64_t projectedValues = 0, projectedIrradiance = 0;
+    double deepestProjected = 0.0, deepestIrradiance = 0.0;
+
     CommitStats& operator+=(const CommitStats& o) {
         totalMs += o.totalMs;
         rayScenesMs += o.rayScenesMs;
@@ -36,6 +42,10 @@ struct CommitStats {
         irradianceProducts += o.irradianceProducts;
         materialUpdates += o.materialUpdates;
         referenceGathers += o.referenceGathers;
+        projectedValues += o.projectedValues;
+        projectedIrradiance += o.projectedIrradiance;
+        deepestProjected = std::min(deepestProjected, o.deepestProjected);
+        deepestIrradiance = std::min(deepestIrradiance, o.deepestIrradiance);
         return *this;
     }
 };

@@ -153,9 +153,13 @@ void RelightEngine::formRadiance(bool reweigh) {
         weighProducts(reweigh, r.begin(), r.end());
     });
     cdf97InverseCharts(std::span<float>(radiance_), asset_->layout, 3);
-    if (reweigh) irradiance_ = moments_.combine(fresnel_);
+    if (reweigh) {
+        irradiance_ = moments_.combine(fresnel_);
+        irradianceNoise_ = zeroNegatives(irradiance_);
+    }
     addSelfTerm();
     requireFinite(radiance_);
+    radianceNoise_ = zeroNegatives(radiance_);
     const VertexWeights& weights = asset_->vertexWeights;
     if (vertexRadiance_.use_count() > 1) {
         std::shared_ptr<std::vector<float>> next = spareVertexRadiance_ && spareVertexRadiance_.use_count() == 1
@@ -172,6 +176,26 @@ void RelightEngine::formRadiance(bool reweigh) {
 void RelightEngine::addSelfTerm() {
     if (self_.empty()) return;
     for (std::size_t i = 0; i < samples_ * 3; ++i) radiance_[i] += self_[i] * irradiance_[i];
+}
+
+// Radiance is never negative, and neither is the exact L at any sample: a nonnegative
+// profile gathers nonnegative E. The compressed transfer adds an error of either sign
+// (about 1e-3 of the peak at the defaults), which takes L below zero only where the true
+// L is smaller than that error: the unlit samples, lit through the profile's far tail
+// alone. A dome's E has the same kind of error from its truncated visibility vectors.
+// Setting those values to zero is the projection onto a set that holds the truth, so it
+// moves every value toward the truth, never away; the count and the depth stay visible
+// (docs/ARCHITECTURE.md#nonnegative-radiance).
+RelightEngine::NegativeNoise zeroNegatives(std::span<float> values) {
+    float lowest = 0.0f, highest = 0.0f;
+    std::uint64_t count = 0;
+    for (float& v : values) {
+        highest = std::max(highest, v);
+        lowest = std::min(lowest, v);
+        count += v < 0.0f;
+        v = std::max(v, 0.0f);
+    }
+    return {count, highest > 0.0f ? double(lowest) / double(highest) : 0.0};
 }
 
 void interpolateToVertices(const VertexWeights& weights, std::span<const float> perSample, std::span<float> out,

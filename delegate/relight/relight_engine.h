@@ -9,6 +9,7 @@
 //                   L = w1^-1 ((1/pi) sum_k s_k z_k)   CDF 9/7 inverse per chart
 //                   L += (1/pi) R_disk(sigma) E(eta)   the self term, when the asset
 //                                                      leaves it to run time (self_term.h)
+//                   E = max(0, E), L = max(0, L)       counted (docs/ARCHITECTURE.md#nonnegative-radiance)
 //
 // L is the subsurface radiance leaving each sample before the outgoing Fresnel factor
 // F_t(eta, w_o), which the render pass applies per pixel:
@@ -23,6 +24,7 @@
 #include "schema/asset/translucent_asset.h"
 #include "schema/scatter/profile_projection.h"
 
+#include <cstdint>
 #include <memory>
 #include <span>
 #include <string>
@@ -57,6 +59,16 @@ public:
     // Bytes the engine holds beyond the asset: the compact transfer, products, radiance.
     std::size_t memoryBytes() const;
 
+    // What the last L and E lost to L >= 0 and E >= 0: the values (sample x channel) the
+    // compression's error had taken below zero, and the lowest of them as a fraction of the
+    // highest (<= 0; 0 when none). Hosts see them in the render stats.
+    struct NegativeNoise {
+        std::uint64_t values = 0;
+        double deepest = 0.0;
+    };
+    const NegativeNoise& radianceNoise() const { return radianceNoise_; }
+    const NegativeNoise& irradianceNoise() const { return irradianceNoise_; }
+
 private:
     void formRadiance(bool reweigh);  // L = w1^-1 ((1/pi) sum_k s_k z_k), then the vertices
     void requireFinite(std::span<const float> radiance) const;
@@ -78,10 +90,15 @@ private:
     std::vector<float> profile_;     // s_k / pi: 3 x paddedK
     std::vector<float> self_;        // R_disk(rho_o; sigma) / pi: samples x 3 (empty: in the transfer)
     std::vector<float> radiance_, irradiance_;
+    NegativeNoise radianceNoise_, irradianceNoise_;
     std::shared_ptr<std::vector<float>> vertexRadiance_ = std::make_shared<std::vector<float>>();
     std::shared_ptr<std::vector<float>> spareVertexRadiance_;
     std::vector<Float4> padded_;     // interpolateToVertices' scratch
 };
+
+// Sets every negative value to zero: how many there were and the lowest as a fraction of
+// the highest value (docs/ARCHITECTURE.md#nonnegative-radiance).
+RelightEngine::NegativeNoise zeroNegatives(std::span<float> values);
 
 // Per render-mesh vertex, sum_j w_j value[sample_j] (RGB): the asset's VertexWeights.
 // out: vertices x 3. Throws opal::Error on inconsistent sizes.

@@ -220,5 +220,18 @@ TEST(RelightEngine, RejectsMismatchedInput) {
     EXPECT_THROW(RelightEngine{broken}, Error);
 }
 
+// E >= 0 and L >= 0 (docs/ARCHITECTURE.md#nonnegative-radiance): negatives become zero,
+// the rest is untouched, and what was zeroed is reported against the highest value.
+TEST(ZeroNegatives, ZeroesOnlyTheNegativesAndReportsTheDeepest) {
+    std::vector<float> values = {0.5f, -0.002f, 2.0f, 0.0f, -0.01f, 1e-9f};
+    const RelightEngine::NegativeNoise noise = zeroNegatives(values);
+    EXPECT_EQ(values, (std::vector<float>{0.5f, 0.0f, 2.0f, 0.0f, 0.0f, 1e-9f}));
+    EXPECT_EQ(noise.values, 2u);
+    EXPECT_DOUBLE_EQ(noise.deepest, double(-0.01f) / 2.0);
+    std::vector<float> none = {0.0f, 3.0f};
+    EXPECT_EQ(zeroNegatives(none).values, 0u);
+    EXPECT_EQ(zeroNegatives(none).deepest, 0.0);
+}
+
 }  // namespace
 }  // namespace opal
