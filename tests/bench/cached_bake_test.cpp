@@ -52,7 +52,7 @@ TEST_F(CachedBakeTest, OtherCompressionIsAnotherBake) {
     o.transfer.keepFraction = 0.05;
     const CachedBake other = bakeOrReuse(o, "candle", dir_);
     EXPECT_FALSE(other.reused);
-    EXPECT_EQ(other.layer, dir_ / "candle-256-k0.05-m256-e0.99995.usda");
+    EXPECT_EQ(other.layer, dir_ / "candle-256-k0.05-m256-e0.99998.usda");
     EXPECT_EQ(other.asset->transfer.keepFraction, 0.05);
 }
 
