@@ -13,6 +13,8 @@
 //                re-projected to the cube map, dotted with the baked vectors, the products
 //   frame        one 1280 x 720 render pass with every AOV bound (opal-render's default),
 //                nothing changed: image formation only (#image-formation)
+//   draft        the same with opal:draftBlock 4: the draft pass (one ray per 4 x 4 pixels)
+//                an interactive viewer shows first
 //
 // and, in the same run, the exact reference for the same edit (bench/relight_reference.h),
 // once per case: the O(N^2) dipole gather with the same irradiance recompute, optionally
@@ -76,6 +78,10 @@ constexpr double kLightMs = 20.0;
 constexpr double kEnvironmentMs = 20.0;
 constexpr double kFrameMs = 30.0;
 constexpr double kConvergeMs = 800.0;
+// The draft and its block: with a material edit (kMaterialMs) and the viewer's display
+// conversion, within a 30 Hz picture.
+constexpr double kDraftMs = 15.0;
+constexpr int kDraftBlock = 4;
 constexpr double kLightSpeedup = 100.0;
 constexpr double kMaterialSpeedup = 10000.0;
 constexpr int kWidth = 1280, kHeight = 720;
@@ -301,6 +307,16 @@ std::vector<CaseResult> frameCases(Session& s, int repeats, FrameOutput& output)
         first.breakdown[0].second.ms.push_back(firstPassMs);
         first.breakdown[1].second.ms.push_back(firstMs - firstPassMs);
     }
+    CaseResult draft = newCase("draft", "1280x720 draft (opal:draftBlock 4) after a restart, every AOV bound", kDraftMs);
+    s.delegate.setRenderSetting("opal:draftBlock", kDraftBlock);
+    for (int i = 0; i <= repeats; ++i) {
+        s.delegate.stop();
+        const auto start = std::chrono::steady_clock::now();
+        pass->execute(state, bindings);
+        waitForPasses(s.delegate, 1);
+        if (i > 0) draft.times.ms.push_back(millisecondsSince(start));
+    }
+    s.delegate.setRenderSetting("opal:draftBlock", 1);
     for (int i = 0; i <= repeats; ++i) {
         s.delegate.stop();
         const double cpu = processCpuMilliseconds();
@@ -341,7 +357,12 @@ std::vector<CaseResult> frameCases(Session& s, int repeats, FrameOutput& output)
         moved.breakdown[0].second.ms.push_back(syncMs);
         moved.breakdown[1].second.ms.push_back(totalMs - syncMs);
     }
-    return {first, converge, moved};
+    return {first, draft, converge, moved};
+}
+
+// The cases that time image formation, which the reference does not change.
+bool imageCase(const std::string& name) {
+    return name == "frame" || name == "draft" || name == "converge" || name == "light_frame";
 }
 
 void announce(const char* what) {
@@ -353,7 +374,7 @@ void announce(const char* what) {
 void runReference(Session& s, const std::shared_ptr<const TranslucentAsset>& asset,
                   const std::shared_ptr<const LatLongMap>& domeMap, int repeats, std::size_t outputs,
                   std::vector<double> peerMaxErrors, std::vector<CaseResult>& cases) {
-    const bool needed = std::any_of(cases.begin(), cases.end(), [](const CaseResult& c) { return c.name != "frame" && c.name != "converge" && c.name != "light_frame"; });
+    const bool needed = std::any_of(cases.begin(), cases.end(), [](const CaseResult& c) { return !imageCase(c.name); });
     std::optional<RelightReference> reference;
     if (needed) {
         reference.emplace(s.scene, asset, domeMap, s.scene.material(RelightScene::MaterialPath).subsurface, outputs,
@@ -365,7 +386,7 @@ void runReference(Session& s, const std::shared_ptr<const TranslucentAsset>& ass
         announce(line);
     }
     for (CaseResult& c : cases) {
-        if (c.name == "frame" || c.name == "converge" || c.name == "light_frame") {
+        if (imageCase(c.name)) {
             c.referenceNote = "n/a: opal:reference forms the image with the same renderer; only the per-vertex "
                               "radiance differs, which the edit cases time";
             continue;

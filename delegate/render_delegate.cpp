@@ -85,8 +85,10 @@ std::map<hd::Token, hd::Value> OpalRenderDelegate::renderStats() const {
     std::map<hd::Token, hd::Value> stats;
     const int done = passesDone_.load(), passes = passCount_.load();
     stats["percentDone"] = passes == 0 ? 0.0 : 100.0 * done / passes;
-    // Pass 0 is the centre sample; pass p >= 1 brings the estimate to p pattern samples.
-    stats["samplesPerPixel"] = done <= 1 ? done : done - 1;
+    // Pass 0 is the centre sample; pass p >= 1 brings the estimate to p pattern samples. A
+    // draft holds no pixel's own sample.
+    const int sampled = std::max(0, done - draftPasses_.load());
+    stats["samplesPerPixel"] = sampled <= 1 ? sampled : sampled - 1;
     stats["passes"] = done;
     stats["passMs"] = lastPassMs_.load();
     stats["convergedMs"] = convergedMs_.load();
@@ -190,7 +192,7 @@ void OpalRenderDelegate::render(hd::RenderIndex& index, RenderJob job) {
     CameraView(job.camera, job.width, job.height, job.cameraPath);  // throws for a bad camera or size
     job.frame = frame(index);
     job.options = RenderOptions{settings_.specular, settings_.transparentBackground, settings_.tileSize,
-                                settings_.samplesPerPixel, settings_.pixelFilter};
+                                settings_.samplesPerPixel, settings_.pixelFilter, settings_.draftBlock};
     {
         std::lock_guard lock(jobMutex_);
         if (job_ && job_->sameAs(job)) return;
@@ -244,15 +246,19 @@ void OpalRenderDelegate::renderJob() {
         generation = jobGeneration_;
         jobStart_ = std::chrono::steady_clock::now();
     }
-    const int passes = passCount(job.options);
-    passCount_ = passes;
+    // The draft is pass -1: before the centre pass, which overwrites it.
+    const int first = job.options.draftBlock > 1 ? -1 : 0, passes = passCount(job.options);
+    passCount_ = passes - first;
+    draftPasses_ = -first;
     try {
         const CameraView camera(job.camera, job.width, job.height, job.cameraPath);
-        for (int pass = 0; pass < passes; ++pass) {
+        const auto stop = [this] { return thread_.checkpoint(); };
+        for (int pass = first; pass < passes; ++pass) {
             if (thread_.checkpoint()) return;
             const auto start = std::chrono::steady_clock::now();
-            if (!renderPass(*job.frame, camera, job.options, job.targets, pass, [this] { return thread_.checkpoint(); }))
-                return;
+            const bool done = pass < 0 ? renderDraft(*job.frame, camera, job.options, job.targets, job.options.draftBlock, stop)
+                                       : renderPass(*job.frame, camera, job.options, job.targets, pass, stop);
+            if (!done) return;
             std::lock_guard lock(jobMutex_);
             if (generation != jobGeneration_) return;  // a pass of a job already replaced
             lastPassMs_ = millisecondsSince(start);
@@ -271,6 +277,24 @@ void OpalRenderDelegate::renderJob() {
 }
 
 void OpalRenderDelegate::commitResources(hd::RenderIndex& index) {
+    // The frame this commit replaces renders no more meanwhile, so that the relighting has
+    // every core (the render thread's passes would be thrown away by the restart anyway). The
+    // commit's publish starts the new frame; a failed commit lets the old one start again.
+    const bool rendering = thread_.isRendering();
+    thread_.stopRender();
+    try {
+        commit(index);
+    } catch (...) {
+        std::lock_guard lock(jobMutex_);
+        if (rendering && job_) {
+            newJob();
+            thread_.startRender();
+        }
+        throw;
+    }
+}
+
+void OpalRenderDelegate::commit(hd::RenderIndex& index) {
     const auto start = std::chrono::steady_clock::now();
     CommitStats stats;
     if (&index != index_) {  // another index: nothing committed before applies

@@ -7,8 +7,8 @@
 //
 // Threads: sync (and so commitResources), execute and destroying prims happen on one host
 // thread; relighting runs there, inside commitResources, so a host whose interface must not
-// wait for it calls sync from a worker thread (the render thread keeps drawing the previous
-// frame meanwhile). The render thread only reads immutable Frames. Buffers may be mapped,
+// wait for it calls sync from a worker thread (its buffers keep the previous frame's last
+// pass meanwhile: the render thread stops, so that the relighting has every core). The render thread only reads immutable Frames. Buffers may be mapped,
 // renderStats() read and pause/resume/stop called from any thread. One delegate serves one
 // render index at a time (as in Hydra); the index and its render passes go before the
 // delegate.
@@ -93,12 +93,13 @@ public:
     // opal:ocioConfig) changed. Throws opal::Error for an invalid camera or size.
     void render(hd::RenderIndex& index, RenderJob job);
     bool isConverged() const { return converged_.load(); }
-    // Passes completed of the current job (0 .. passCount), and their count.
+    // Passes completed of the current job (0 .. passCount, + 1 with a draft), and their count.
     int passesDone() const { return passesDone_.load(); }
 
 private:
     void reloadDomeTextures(hd::RenderIndex& index);  // after opal:ocioConfig changed
     void renderJob();  // the render thread's callback
+    void commit(hd::RenderIndex& index);  // commitResources, with the render thread stopped
     void restart(RenderJob job);
     void publish(std::shared_ptr<const Frame> frame);
     void newJob();  // under jobMutex_: progress starts again
@@ -129,7 +130,7 @@ private:
     std::vector<std::string> renderErrors_;
     std::chrono::steady_clock::time_point jobStart_;
     std::uint64_t jobGeneration_ = 0;  // one per job (a restart is a new job)
-    std::atomic<int> passesDone_{0}, passCount_{0};
+    std::atomic<int> passesDone_{0}, passCount_{0}, draftPasses_{0};  // passes of the current job (the draft counts)
     std::atomic<double> lastPassMs_{0.0}, convergedMs_{0.0};
     std::atomic<bool> converged_{false};
     RenderThread thread_{[this] { renderJob(); }};  // last: stops before the members it uses go

@@ -25,6 +25,7 @@ struct RenderJob {
                                 a.horizontalAperture == b.horizontalAperture &&
                                 a.verticalAperture == b.verticalAperture && a.nearClip == b.nearClip &&
                                 a.farClip == b.farClip;
+        // draftBlock is left out: the picture a job converges to does not depend on it.
         const RenderOptions& p = options;
         const RenderOptions& q = o.options;
         const bool sameOptions = p.specular == q.specular && p.transparentBackground == q.transparentBackground &&

@@ -16,6 +16,7 @@ const hd::Token OcioConfig = "opal:ocioConfig";
 const hd::Token TileSize = "opal:tileSize";
 const hd::Token SamplesPerPixel = "opal:samplesPerPixel";
 const hd::Token PixelFilterKey = "opal:pixelFilter";
+const hd::Token DraftBlock = "opal:draftBlock";
 
 std::vector<std::string> filterChoices() {
     std::vector<std::string> choices;
@@ -23,8 +24,8 @@ std::vector<std::string> filterChoices() {
     return choices;
 }
 
-const std::array<hd::RenderSettingDescriptor, 7>& table() {
-    static const std::array<hd::RenderSettingDescriptor, 7> rows = {{
+const std::array<hd::RenderSettingDescriptor, 8>& table() {
+    static const std::array<hd::RenderSettingDescriptor, 8> rows = {{
         {Reference, "Reference", false, {}, {}, {},
          "render with the exact dipole gather (O(N^2) per mesh) instead of the relighting engine"},
         {Specular, "Specular", true, {}, {}, {}, "the GGX specular layer (a material can also turn its own off)"},
@@ -37,6 +38,8 @@ const std::array<hd::RenderSettingDescriptor, 7>& table() {
          "sub-pixel samples a converged pixel averages (1: the ray through the centre only)"},
         {PixelFilterKey, "Pixel filter", std::string("box"), {}, {}, filterChoices(),
          "how a pixel's samples are weighted: box or blackmanHarris"},
+        {DraftBlock, "Draft block", 1, 1.0, 16.0, {},
+         "a (re)started frame first shows a draft with one ray per N x N pixels; 1: no draft"},
     }};
     return rows;
 }
@@ -102,6 +105,7 @@ bool RenderSettings::set(const hd::Token& key, const hd::Value& value) {
     if (key == OcioConfig) return assign(ocioConfig, std::get<std::string>(v));
     if (key == TileSize) return assign(tileSize, std::get<int>(v));
     if (key == SamplesPerPixel) return assign(samplesPerPixel, std::get<int>(v));
+    if (key == DraftBlock) return assign(draftBlock, std::get<int>(v));
     return assign(pixelFilter, parsePixelFilter(std::get<std::string>(v)));
 }
 
@@ -113,6 +117,7 @@ hd::Value RenderSettings::get(const hd::Token& key) const {
     if (key == TileSize) return tileSize;
     if (key == SamplesPerPixel) return samplesPerPixel;
     if (key == PixelFilterKey) return std::string(pixelFilterName(pixelFilter));
+    if (key == DraftBlock) return draftBlock;
     unknown(key);
 }
 

@@ -20,6 +20,7 @@ struct RenderSettings {
     int tileSize = 32;                   // opal:tileSize: pixels per side of a render task
     int samplesPerPixel = 16;            // opal:samplesPerPixel: sub-pixel samples a converged pixel holds
     PixelFilter pixelFilter = PixelFilter::Box;  // opal:pixelFilter
+    int draftBlock = 1;                  // opal:draftBlock: a restarted frame's draft, one ray per N x N pixels
 
     // Every writable setting, in the order DELEGATE.md gives them.
     static std::span<const hd::RenderSettingDescriptor> descriptors();

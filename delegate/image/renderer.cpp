@@ -131,7 +131,8 @@ struct Surface {
 
 struct Block {
     int count = 0;
-    Imath::V2f offset{0.5f, 0.5f};  // the pass's sample position inside each pixel
+    int step = 1;                   // pixels per sample side: 1, or the draft's N (an N x N cell a sample)
+    Imath::V2f offset{0.5f, 0.5f};  // the pass's sample position inside each pixel (or cell)
     std::array<int, kBlockPixels> x{}, y{};
     std::array<Ray, kBlockPixels> rays;
     std::array<std::optional<RayHit>, kBlockPixels> hits;
@@ -326,7 +327,8 @@ void shadeBlock(const FrameContext& context, Block& block) {
     const std::span<const Ray> rays = std::span(block.rays).first(std::size_t(block.count));
     const std::span<std::optional<RayHit>> hits = std::span(block.hits).first(std::size_t(block.count));
     // Blocks outside the scene's projected bounds miss everything: no rays traced.
-    const int x0 = block.x[0], y0 = block.y[0], x1 = block.x[block.count - 1] + 1, y1 = block.y[block.count - 1] + 1;
+    const int x0 = block.x[0], y0 = block.y[0];
+    const int x1 = block.x[block.count - 1] + block.step, y1 = block.y[block.count - 1] + block.step;
     if (context.frame.rays && context.scene.overlaps(x0, y0, x1, y1))
         context.frame.rays->intersectCoherent(rays, hits);
     else
@@ -401,14 +403,16 @@ void putRow(hd::AovId aov, const Pixel* pixels, std::size_t n, std::size_t c, fl
 // frame's AOVs (70 MB at 720p with every AOV) into the cache only to overwrite it. Later
 // passes move each filtered AOV toward the new sample: v += (w_p / W_p)(s - v), the running
 // form of sum w_i s_i / sum w_i with W_p = w_1 + ... + w_p.
+// A draft (step > 1) holds one sample per step x step cell, which flush writes to each
+// pixel of the cell.
 class TileAovs {
 public:
-    TileAovs(const AovTargets& frame, int pass, int tileWidth, int tileHeight)
-        : frame_(frame), pass_(pass), tileWidth_(tileWidth), pixels_(std::size_t(tileWidth) * tileHeight),
-          row_(std::size_t(tileWidth) * 4) {}
+    TileAovs(const AovTargets& frame, int pass, int step, int tileWidth, int tileHeight)
+        : frame_(frame), pass_(pass), step_(step), tileWidth_(tileWidth), pixels_(std::size_t(tileWidth) * tileHeight),
+          row_(std::size_t(tileWidth) * 4), cellRow_(step > 1 ? row_.size() : 0) {}
 
-    // Tile pixel `index` ((y - y0) tileWidth + (x - x0)): shade into it.
-    Pixel& pixel(std::size_t index) { return pixels_[index]; }
+    // The sample of tile pixel (x - x0, y - y0), or of the draft's cell holding it: shade into it.
+    Pixel& pixel(int x, int y) { return pixels_[std::size_t(y / step_) * tileWidth_ + std::size_t(x / step_)]; }
 
     // Rows [y0, y1) x columns [x0, x1) of the tile into the frame; `blend` = w_p / W_p.
     // Pass 0 writes every bound AOV, later passes the filtered ones.
@@ -420,7 +424,7 @@ public:
             const std::size_t c = std::size_t(aov.channelCount()), n = std::size_t(x1 - x0);
             buffer.writeTiles([&](float* target) {
                 for (int y = y0; y < y1; ++y) {
-                    putRow(hd::AovId(a), pixels_.data() + std::size_t(y - y0) * tileWidth_, n, c, row_.data());
+                    if ((y - y0) % step_ == 0) fillRow(hd::AovId(a), (y - y0) / step_, n, c);
                     float* to = target + (std::size_t(y) * buffer.width() + x0) * c;
                     if (pass_ == 0 || blend == 1.0f)
                         streamCopy(row_.data(), to, n * c);
@@ -435,6 +439,15 @@ public:
     }
 
 private:
+    // row_ = the n pixels of tile row (or draft cell row) `row`, AOV `aov`, c channels each.
+    void fillRow(hd::AovId aov, int row, std::size_t n, std::size_t c) {
+        const Pixel* samples = pixels_.data() + std::size_t(row) * tileWidth_;
+        if (step_ == 1) return putRow(aov, samples, n, c, row_.data());
+        const std::size_t step = std::size_t(step_);
+        putRow(aov, samples, (n + step - 1) / step, c, cellRow_.data());
+        for (std::size_t x = 0; x < n; ++x) std::copy_n(cellRow_.data() + x / step * c, c, row_.data() + x * c);
+    }
+
     // to[0, n) = from[0, n): plain stores up to a 16-byte boundary, then 4 floats a store.
     static void streamCopy(const float* from, float* to, std::size_t n) {
         std::size_t i = 0;
@@ -446,10 +459,11 @@ private:
     }
 
     const AovTargets& frame_;
-    int pass_;
+    int pass_, step_;
     int tileWidth_;
-    std::vector<Pixel> pixels_;  // the tile's samples, row-major
-    std::vector<float> row_;     // one row of one AOV, its channels interleaved
+    std::vector<Pixel> pixels_;   // the tile's samples (a draft's: its cells'), row-major
+    std::vector<float> row_;      // one row of one AOV, its channels interleaved
+    std::vector<float> cellRow_;  // a draft's: one row of cells of one AOV
 };
 
 // Debug builds check what a pass wrote: every radiometric AOV finite (light_emission.h keeps
@@ -478,22 +492,27 @@ std::pair<Imath::V2f, float> passSample(const RenderOptions& options, int pass) 
 
 }  // namespace
 
-int passCount(const RenderOptions& options) { return options.samplesPerPixel >= 2 ? options.samplesPerPixel + 1 : 1; }
+namespace {
 
-bool renderPass(const Frame& frame, const CameraView& camera, const RenderOptions& options, const AovTargets& targets,
-                int pass, const std::function<bool()>& stop) {
+// Pass `pass` (0 with `step` > 1: the draft) tile by tile: one sample per step x step cell of
+// pixels, at `offset` inside the cell, written to every pixel of the cell.
+bool renderSamples(const Frame& frame, const CameraView& camera, const RenderOptions& options,
+                   const AovTargets& targets, int pass, int step, const std::function<bool()>& stop) {
     const FrameContext context = frameContext(frame, camera, options);
-    const auto [offset, blend] = passSample(options, pass);
+    const auto [sample, blend] = passSample(options, pass);
+    const Imath::V2f offset = step == 1 ? sample : Imath::V2f(0.5f * float(step));
     const int width = camera.width(), height = camera.height();
     // Tiles are whole blocks, so a block never straddles two tiles.
-    const int tileWidth = std::max(kBlockWidth, options.tileSize / kBlockWidth * kBlockWidth);
-    const int tileHeight = std::max(kBlockHeight, options.tileSize / kBlockHeight * kBlockHeight);
+    const int blockWidth = kBlockWidth * step, blockHeight = kBlockHeight * step;
+    const int tileWidth = std::max(blockWidth, options.tileSize / blockWidth * blockWidth);
+    const int tileHeight = std::max(blockHeight, options.tileSize / blockHeight * blockHeight);
     const int tilesX = (width + tileWidth - 1) / tileWidth, tilesY = (height + tileHeight - 1) / tileHeight;
     std::atomic<bool> stopped{false};
     tbb::parallel_for(tbb::blocked_range<int>(0, tilesX * tilesY), [&](const tbb::blocked_range<int>& range) {
         Block block;
+        block.step = step;
         block.offset = offset;
-        TileAovs tile(targets, pass, tileWidth, tileHeight);
+        TileAovs tile(targets, pass, step, tileWidth, tileHeight);
         for (int t = range.begin(); t != range.end(); ++t) {
             if (stopped.load(std::memory_order_relaxed) || (stop && stop())) {
                 stopped = true;
@@ -504,17 +523,16 @@ bool renderPass(const Frame& frame, const CameraView& camera, const RenderOption
             // A tile no primary ray can hit holds the background, which the centre pass looked up
             // filtered over the pixel's footprint already: later passes leave it.
             if (pass > 0 && !context.scene.overlaps(x0, y0, x1, y1)) continue;
-            for (int by = y0; by < y1; by += kBlockHeight)
-                for (int bx = x0; bx < x1; bx += kBlockWidth) {
+            for (int by = y0; by < y1; by += blockHeight)
+                for (int bx = x0; bx < x1; bx += blockWidth) {
                     block.count = 0;
-                    for (int y = by; y < std::min(by + kBlockHeight, y1); ++y)
-                        for (int x = bx; x < std::min(bx + kBlockWidth, x1); ++x) {
+                    for (int y = by; y < std::min(by + blockHeight, y1); y += step)
+                        for (int x = bx; x < std::min(bx + blockWidth, x1); x += step) {
                             block.x[block.count] = x;
                             block.y[block.count++] = y;
                         }
                     shadeBlock(context, block);
-                    for (int i = 0; i < block.count; ++i)
-                        tile.pixel(std::size_t(block.y[i] - y0) * tileWidth + (block.x[i] - x0)) = block.pixels[i];
+                    for (int i = 0; i < block.count; ++i) tile.pixel(block.x[i] - x0, block.y[i] - y0) = block.pixels[i];
                 }
             tile.flush(x0, y0, x1, y1, blend);
         }
@@ -523,6 +541,21 @@ bool renderPass(const Frame& frame, const CameraView& camera, const RenderOption
     if (!stopped) requireFiniteRadiometric(targets);
 #endif
     return !stopped;
+}
+
+}  // namespace
+
+int passCount(const RenderOptions& options) { return options.samplesPerPixel >= 2 ? options.samplesPerPixel + 1 : 1; }
+
+bool renderPass(const Frame& frame, const CameraView& camera, const RenderOptions& options, const AovTargets& targets,
+                int pass, const std::function<bool()>& stop) {
+    return renderSamples(frame, camera, options, targets, pass, 1, stop);
+}
+
+bool renderDraft(const Frame& frame, const CameraView& camera, const RenderOptions& options, const AovTargets& targets,
+                 int block, const std::function<bool()>& stop) {
+    if (block < 1) throw Error("renderer: draft block " + std::to_string(block) + " is not a positive size");
+    return renderSamples(frame, camera, options, targets, 0, block, stop);
 }
 
 }  // namespace opal

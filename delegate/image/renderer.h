@@ -69,6 +69,7 @@ struct RenderOptions {
     int tileSize = 32;
     int samplesPerPixel = 16;
     PixelFilter filter = PixelFilter::Box;
+    int draftBlock = 1;  // > 1: a draft before pass 0 (renderDraft); 1: none
 };
 
 // The buffer each AOV goes to (hd::AovId order); null: not rendered. Each must be allocated
@@ -91,5 +92,13 @@ int passCount(const RenderOptions& options);
 // there and renderPass returns false; true when every tile was rendered.
 bool renderPass(const Frame& frame, const CameraView& camera, const RenderOptions& options, const AovTargets& targets,
                 int pass, const std::function<bool()>& stop = {});
+
+// The draft an interactive host shows first: pass 0 with one ray per `block` x `block` cell
+// of pixels (through the cell's centre), its values written to every pixel of the cell
+// (the last row and column of cells clipped to the image). It writes every bound AOV, as
+// pass 0 does, which then overwrites every pixel: the passes after it are unchanged.
+// Throws opal::Error for a block below 1; returns as renderPass.
+bool renderDraft(const Frame& frame, const CameraView& camera, const RenderOptions& options, const AovTargets& targets,
+                 int block, const std::function<bool()>& stop = {});
 
 }  // namespace opal

@@ -18,7 +18,7 @@
 #include "examples/opal-view/light_panel.h"
 #include "examples/opal-view/menu_bar.h"
 #include "examples/opal-view/panel_visibility.h"
-#include "examples/opal-view/picture_texture.h"
+#include "examples/opal-view/gl/picture_texture.h"
 #include "examples/opal-view/view_options.h"
 #include "examples/opal-view/window.h"
 
@@ -59,7 +59,15 @@ private:
     void drawInterface();
     void collectMessages();
     void refreshPicture();
+    // The picture's new state is on screen: what a drag measures.
+    void shown(const PictureTag& tag);
     void showConverted();
+    // The radiometric AOV's buffer, scene-linear, to the GPU's display transform.
+    void uploadSceneLinear(const PictureTag& tag);
+    // Whether the shown AOV goes through the GPU's display transform (else the converter's CPU one).
+    bool gpuDisplay() const;
+    // What the probe reports as shown: read back from the GPU when it changed since.
+    const Image& shownPicture();
     void updateTitle();
     void carryOut(const FileRequest& request);
     // Opens what was dropped on the window (the first file), reporting failures in the HUD.
@@ -77,6 +85,9 @@ private:
     std::optional<std::filesystem::path> screenshot_;
     HudFigures hud_;
     Image shownImage_;      // the display-referred picture on screen (for the probe)
+    bool shownImageStale_ = false;  // the GPU drew a newer one
+    std::string gpuDisplayError_;   // why the GPU's display transform is off (the CPU's shows then)
+    int draftBlock_ = 1;            // the delegate's draft pictures: one ray per N x N pixels
     std::string shownAov_;  // what it shows
     std::string title_;
     MenuBar menu_;

@@ -41,7 +41,7 @@ TEST(RenderDelegate, CreatesItsPrimTypesAndNothingElse) {
 TEST(RenderDelegate, RenderSettingsAreValidatedAndNamed) {
     OpalRenderDelegate delegate;
     const std::map<hd::Token, hd::Value> settings = delegate.renderSettings();
-    ASSERT_EQ(settings.size(), 7u);
+    ASSERT_EQ(settings.size(), 8u);
     EXPECT_EQ(std::get<int>(settings.at("opal:samplesPerPixel")), 16);
     EXPECT_EQ(std::get<std::string>(settings.at("opal:pixelFilter")), "box");
     EXPECT_EQ(std::get<bool>(settings.at("opal:reference")), false);
@@ -49,6 +49,7 @@ TEST(RenderDelegate, RenderSettingsAreValidatedAndNamed) {
     EXPECT_EQ(std::get<bool>(settings.at("opal:transparentBackground")), false);
     EXPECT_EQ(std::get<std::string>(settings.at("opal:ocioConfig")), "");
     EXPECT_EQ(std::get<int>(settings.at("opal:tileSize")), 32);
+    EXPECT_EQ(std::get<int>(settings.at("opal:draftBlock")), 1);
 
     delegate.setRenderSetting("opal:reference", true);
     EXPECT_EQ(std::get<bool>(delegate.renderSetting("opal:reference")), true);

@@ -46,12 +46,12 @@ Image ids(const Image& in) {
     return perPixel(in, [&](float* id) { std::fill(id, id + 3, id[0] < 0.0f ? 0.0f : (id[0] + 1.0f) / (top + 1.0f)); });
 }
 
-bool radiometric(const std::string& aov) {
+}  // namespace
+
+bool isRadiometric(const std::string& aov) {
     const hd::AovDescriptor* row = hd::findAov(aov);
     return row && row->sampling == hd::AovSampling::Filtered && row->channelCount() >= 3;
 }
-
-}  // namespace
 
 Image mappedImage(const hd::RenderBuffer& buffer) {
     const hd::RenderBuffer::Mapped mapped(buffer);
@@ -79,7 +79,7 @@ Image DisplayPicture::toDisplay(const Image& sceneLinear, const std::string& aov
     if (aov == "normal") return normals(sceneLinear);
     if (aov == "depth") return depth(sceneLinear);
     if (aov == "primId") return ids(sceneLinear);
-    if (!radiometric(aov)) return perPixel(sceneLinear, [](float*) {});
+    if (!isRadiometric(aov)) return perPixel(sceneLinear, [](float*) {});
     const float gain = float(std::exp2(grade.exposure));
     Image rgb = perPixel(sceneLinear, [gain](float* c) {
         for (int i = 0; i < 3; ++i) c[i] *= gain;

@@ -14,6 +14,9 @@
 
 namespace opal::view {
 
+// Whether an AOV is radiometric (filtered, RGB or RGBA): shown through the view transform.
+bool isRadiometric(const std::string& aov);
+
 // The buffer's pixels, copied while it is mapped (never half a tile). Empty before the
 // render pass allocated it.
 Image mappedImage(const hd::RenderBuffer& buffer);

@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,12 +25,15 @@ public:
     void shown(int applied, Clock::time_point when);
 
     // "interface 58.1 fps, 31.0 new pictures/s, edit to picture median 24 ms (max 61),
-    // N edits", over [start, end].
+    // N edits in S s": the rates over the drag, [start, the last new picture] (or [start,
+    // end] when none was shown), not over the wait for convergence after it.
     std::string summary(Clock::time_point end) const;
 
 private:
     Clock::time_point start_;
     int frames_ = 0, pictures_ = 0, lastShown_ = 0;
+    int framesAtLastPicture_ = 0;
+    std::optional<Clock::time_point> lastPicture_;
     std::map<int, Clock::time_point> pending_;  // edits not shown yet, by submission
     std::vector<double> latenciesMs_;
     int edits_ = 0;

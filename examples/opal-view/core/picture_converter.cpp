@@ -6,21 +6,21 @@ namespace opal::view {
 
 namespace {
 
-// Each 2 x 2 block's mean (a last odd row or column averages what it has).
-Image halved(const Image& image) {
-    if (image.empty()) return image;
-    Image half((image.width() + 1) / 2, (image.height() + 1) / 2, image.channels());
-    for (int y = 0; y < half.height(); ++y)
-        for (int x = 0; x < half.width(); ++x)
+// Each block x block block's mean (the last row and column of blocks average what they have).
+Image reduced(const Image& image, int block) {
+    if (image.empty() || block <= 1) return image;
+    Image out((image.width() + block - 1) / block, (image.height() + block - 1) / block, image.channels());
+    for (int y = 0; y < out.height(); ++y)
+        for (int x = 0; x < out.width(); ++x)
             for (int c = 0; c < image.channels(); ++c) {
                 float sum = 0.0f;
                 int count = 0;
-                for (int dy = 0; dy < 2 && 2 * y + dy < image.height(); ++dy)
-                    for (int dx = 0; dx < 2 && 2 * x + dx < image.width(); ++dx, ++count)
-                        sum += image.at(2 * x + dx, 2 * y + dy, c);
-                half.at(x, y, c) = sum / float(count);
+                for (int dy = 0; dy < block && block * y + dy < image.height(); ++dy)
+                    for (int dx = 0; dx < block && block * x + dx < image.width(); ++dx, ++count)
+                        sum += image.at(block * x + dx, block * y + dy, c);
+                out.at(x, y, c) = sum / float(count);
             }
-    return half;
+    return out;
 }
 
 }  // namespace
@@ -86,7 +86,7 @@ ConvertedPicture PictureConverter::convert(const PictureRequest& request) {
         if (request.display != display_.display() || request.view != display_.view())
             display_.setDisplayView(request.display, request.view);
         const Image mapped = mappedImage(*request.buffer);
-        const Image linear = request.halfResolution ? halved(mapped) : mapped;
+        const Image linear = reduced(mapped, request.block);
         // Isolated: while its rows run, this thread must not pick up the renderer's tiles.
         tbb::this_task_arena::isolate([&] { picture.image = display_.toDisplay(linear, request.aov, request.grade); });
     } catch (const std::exception& e) {

@@ -27,9 +27,11 @@ struct PictureRequest {
     std::string aov, display, view;
     DisplayGrade grade;
     PictureTag tag;
-    // Convert a quarter of the pixels (2 x 2 averaged in scene-linear): while a picture
-    // is still changing, a conversion four times as fast matters more than its detail.
-    bool halfResolution = false;
+    // Convert one pixel per block x block (their mean in scene-linear): while a picture is
+    // still changing, a conversion block^2 times as fast matters more than its detail. A
+    // delegate's draft (opal:draftBlock) is uniform over its blocks: converted with its own
+    // block size, it loses nothing.
+    int block = 1;
 };
 
 struct ConvertedPicture {

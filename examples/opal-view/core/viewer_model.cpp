@@ -29,6 +29,8 @@ bool sameCamera(const hd::CameraDesc& a, const hd::CameraDesc& b) {
 RenderSettingChanges ViewerModel::changedSettings() const {
     RenderSettingChanges changed;
     for (const hd::RenderSettingDescriptor& setting : delegate_.renderSettingDescriptors()) {
+        // The viewer's own draft pictures (viewer.cpp) change no converged pixel: not the scene's.
+        if (setting.key == "opal:draftBlock") continue;
         const hd::Value value = renderSetting(setting.key);
         if (!(value == setting.defaultValue)) changed.emplace_back(setting.key, value);
     }
