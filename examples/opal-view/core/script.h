@@ -37,10 +37,19 @@
 //   aov NAME                           the AOV shown (hd/aov.h)
 //   panel help|stats|settings|probe on|off   the optional panels (the View menu)
 //   gizmos on|off                      the light gizmos over the picture (View > Light gizmos)
-//   camera frame|reset
-//   camera orbit YAW PITCH             degrees, added to the camera's
-//   camera focal MM                    the lens' focal length (film 36 x 24 mm unless the
-//                                      scene's camera says otherwise), 1 to 10000
+//   camera frame|reset                 frame everything; back to the camera the file opened with
+//   camera frame selection             frame the selected mesh
+//   camera use PATH|free               look through one of the scene's cameras (it follows
+//                                      scene time), or the free camera from where it looks
+//   camera orbit YAW PITCH             degrees, added to the free camera's
+//   camera focal MM                    the free camera's focal length (film 36 x 24 mm unless
+//                                      the scene's camera says otherwise), 1 to 10000
+//   camera fov DEGREES                 the free camera's horizontal field of view, 1 to 170
+//                                      (the focal length that gives it in this window)
+//   camera clip NEAR FAR|auto          the free camera's clipping planes, or automatic ones
+//                                      holding the whole scene
+//   select PATH                        a mesh (the material panel edits it, frame selection
+//                                      frames it) or a light (the viewport drags it)
 //   time CODE                          scene time (the layer's time codes), paused there
 //   play | pause                       scene time runs with the wall clock, or stops
 //   wait [SECONDS]                     until the picture converged (default 300 s)
@@ -68,7 +77,7 @@ namespace opal::view {
 
 enum class ActionKind {
     Load, MaterialSet, MaterialReset, MaterialPreset, LightMove, LightTurn, LightSet, LightAdd, LightRemove, LightRename,
-    LightEnable, Environment, Undo, Redo, Setting, Panel, Gizmos, View, Exposure, Gamma, Aov, CameraFrame, CameraReset, CameraOrbit, CameraFocal, Time, Play, Wait, Drag, Screenshot,
+    LightEnable, Environment, Undo, Redo, Setting, Panel, Gizmos, View, Exposure, Gamma, Aov, CameraFrame, CameraReset, CameraOrbit, CameraFocal, CameraUse, CameraFov, CameraClip, Select, Time, Play, Wait, Drag, Screenshot,
     SaveExr, SavePng, SaveUsda, Probe, Quit
 };
 

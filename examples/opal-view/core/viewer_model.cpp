@@ -55,6 +55,8 @@ void ViewerModel::open(const std::filesystem::path& file) {
     document_ = std::move(document);
     home_ = initialCamera();
     camera = home_;
+    usedCamera_.reset();
+    viewport_.camera = ViewCameraPath;
     scene::Scene scene = document_->scene;
     scene.cameras[ViewCameraPath] = {cameraDesc(camera, bounds_), {}};
     edited_.emplace(scene);
@@ -273,7 +275,7 @@ std::string ViewerModel::title() const {
 
 void ViewerModel::saveScene(const std::filesystem::path& file) {
     if (!isOpen()) throw Error("no scene is open");
-    SceneExport out{scene(), edited_->disabledLights(), {}, ViewCameraPath, viewport_.width, viewport_.height,
+    SceneExport out{scene(), edited_->disabledLights(), {}, viewport_.camera, viewport_.width, viewport_.height,
                     changedSettings()};
     out.scene.cameras.at(ViewCameraPath).desc = cameraDesc(camera, bounds_);
     if (!document_->assetOnly) {
@@ -296,9 +298,47 @@ void ViewerModel::moveLight(const hd::SdfPath& path, const Imath::V3d& position)
     setLight(path, movedLight(light(path), position));
 }
 
-void ViewerModel::frameAll() { frame(camera, bounds_, aspect()); }
+std::vector<hd::SdfPath> ViewerModel::sceneCameras() const {
+    std::vector<hd::SdfPath> cameras;
+    for (const auto& entry : scene().cameras)
+        if (entry.first != ViewCameraPath) cameras.push_back(entry.first);
+    return cameras;
+}
 
-void ViewerModel::resetCamera() { camera = home_; }
+void ViewerModel::useCamera(const hd::SdfPath& path) {
+    const std::vector<hd::SdfPath> cameras = sceneCameras();
+    if (std::find(cameras.begin(), cameras.end(), path) == cameras.end()) {
+        std::string known;
+        for (const hd::SdfPath& camera : cameras) known += (known.empty() ? "<" : ", <") + camera + ">";
+        throw Error("no camera <" + path + "> in the scene (cameras: " + (known.empty() ? "none" : known) + ")");
+    }
+    usedCamera_ = path;
+    viewport_.camera = path;
+}
+
+OrbitCamera& ViewerModel::useFreeCamera() {
+    camera = viewedCamera();
+    usedCamera_.reset();
+    viewport_.camera = ViewCameraPath;
+    return camera;
+}
+
+OrbitCamera ViewerModel::viewedCamera() const {
+    if (!usedCamera_) return camera;
+    OrbitCamera viewed = orbitFromCamera(scene().cameras.at(*usedCamera_).desc, bounds_);
+    viewed.nearClip = camera.nearClip;
+    viewed.farClip = camera.farClip;
+    return viewed;
+}
+
+void ViewerModel::frameAll() { frame(useFreeCamera(), bounds_, aspect()); }
+
+void ViewerModel::frameSelection() { frame(useFreeCamera(), meshBounds(scene(), selectedMesh_), aspect()); }
+
+void ViewerModel::resetCamera() {
+    useFreeCamera();
+    camera = home_;
+}
 
 void ViewerModel::setViewport(int width, int height) {
     viewport_.width = std::max(width, 1);
