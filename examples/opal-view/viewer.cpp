@@ -183,7 +183,7 @@ void Viewer::drawInterface() {
     const float tallest = std::max(ImGui::GetIO().DisplaySize.y - HudHeight, 100.0f);
     ImGui::SetNextWindowSizeConstraints(ImVec2(PanelWidth, 0.0f), ImVec2(PanelWidth, tallest));
     ImGui::Begin("Look");
-    drawMaterialPanel(model_);
+    drawMaterialPanel(model_, materialPanel_);
     drawLightPanel(model_, lightPanel_);
     drawEnvironmentPanel(model_, environment_);
     drawCameraPanel(model_);

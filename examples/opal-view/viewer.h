@@ -16,6 +16,7 @@
 #include "examples/opal-view/hud.h"
 #include "examples/opal-view/imgui_layer.h"
 #include "examples/opal-view/light_panel.h"
+#include "examples/opal-view/material_panel.h"
 #include "examples/opal-view/menu_bar.h"
 #include "examples/opal-view/panel_visibility.h"
 #include "examples/opal-view/picture_texture.h"
@@ -83,6 +84,7 @@ private:
     RecentFiles recent_;
     PanelVisibility panels_;
     LightPanelState lightPanel_;
+    MaterialPanelState materialPanel_;
     std::string settingsProblem_;
     EnvironmentPanelState environment_;
     int framesSincePanels_ = 0;  // interface frames drawn since a script opened or closed a panel

@@ -24,6 +24,8 @@ constexpr ActionForm Forms[] = {
     {"material set =sigma_a N N N", ActionKind::MaterialSet},
     {"material set =eta N", ActionKind::MaterialSet},
     {"material set =roughness N", ActionKind::MaterialSet},
+    {"material set =albedo N N N", ActionKind::MaterialSet},
+    {"material set =mfp N N N", ActionKind::MaterialSet},
     {"material reset", ActionKind::MaterialReset},
     {"material preset W", ActionKind::MaterialPreset},
     {"light move W N N N", ActionKind::LightMove},

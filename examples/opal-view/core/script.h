@@ -5,6 +5,10 @@
 //   load PATH                          open a scene or asset layer
 //   material set sigma_s|sigma_a R G B the selected mesh's material, mm^-1 per channel
 //   material set eta|roughness V
+//   material set albedo R G B          the total diffuse reflectance per channel (0 to 1),
+//                                      the mean free path kept (sigma_s', sigma_a converted)
+//   material set mfp R G B             the diffuse mean free path per channel (mm), the
+//                                      albedo kept
 //   material reset                     back to the asset's baked default
 //   material preset NAME               a measured material (marble, skin1, ...), eta included
 //   light move PATH X Y Z              a light's position in world space
