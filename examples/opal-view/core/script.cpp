@@ -39,6 +39,7 @@ constexpr ActionForm Forms[] = {
     {"light set W =cone N", ActionKind::LightSet},
     {"light set W =softness N", ActionKind::LightSet},
     {"light set W =angle N", ActionKind::LightSet},
+    {"light set W =flicker N N N", ActionKind::LightSet},
     {"light add =point", ActionKind::LightAdd},
     {"light add =sphere", ActionKind::LightAdd},
     {"light add =spot", ActionKind::LightAdd},

@@ -22,6 +22,8 @@
 //   light set PATH cone DEGREES        a sphere light's cone (0 to 180 off its axis): a spot
 //   light set PATH softness S          a spot light's cone softness, 0 to 1
 //   light set PATH angle DEGREES       a distant light's angular diameter, 0 to 180
+//   light set PATH flicker AMPLITUDE HZ SEED   a shadow-field light's flicker (amplitude 0
+//                                      to 1, 0: steady; 0 to 1000 Hz; a whole seed)
 //   light add point|sphere|spot|distant|dome [PATH]
 //                                      a new light (default: under /_OpalView/Lights), selected
 //   light add shadowfield LAYER.usda [PATH]  a baked light layer (opal-bake light) as a new

@@ -4,6 +4,7 @@
 #include "examples/opal-view/core/edited_scene.h"
 #include "examples/opal-view/core/environment_edit.h"
 #include "examples/opal-view/core/light_drag.h"
+#include "examples/opal-view/core/light_flicker_edit.h"
 #include "examples/opal-view/core/light_shape.h"
 #include "schema/error.h"
 
@@ -66,6 +67,7 @@ void runLight(const ScriptAction& action, ViewerModel& model) {
     if (parameter == "exposure") light.exposure = action.numbers[0];
     if (parameter == "color") light.color = Rgb{action.numbers[0], action.numbers[1], action.numbers[2]};
     if (parameter == "temperature") setColorTemperature(light, action.numbers.empty() ? 0.0 : action.numbers[0]);
+    if (parameter == "flicker") setFlicker(light, action.numbers[0], action.numbers[1], action.numbers[2]);
     for (const std::string_view shape : lightShapeParameters())
         if (parameter == shape) setShapeParameter(light, parameter, action.numbers[0]);
     model.setLight(path, light);
