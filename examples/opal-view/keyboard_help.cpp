@@ -22,6 +22,7 @@ constexpr Shortcut Shortcuts[] = {
     {"P", "pixel probe: every AOV's value under the cursor"},
     {"Space", "play or pause scene time (animated lights and transforms, flicker)"},
     {"G", "light gizmos: where each light is, an arrow for a distant light"},
+    {"W", "A/B wipe: the engine left of the line, the exact reference right (drag the line)"},
     {"Ctrl+Z", "undo a material or light edit"},
     {"Ctrl+Shift+Z, Ctrl+Y", "redo"},
     {"H", "this help"},

@@ -20,8 +20,10 @@
 #include "examples/opal-view/menu_bar.h"
 #include "examples/opal-view/panel_visibility.h"
 #include "examples/opal-view/picture_texture.h"
+#include "examples/opal-view/reference_picture.h"
 #include "examples/opal-view/view_options.h"
 #include "examples/opal-view/window.h"
+#include "examples/opal-view/wipe_overlay.h"
 
 #include <chrono>
 #include <optional>
@@ -43,6 +45,7 @@ public:
     void setExposure(double stops) override;
     void setGamma(double gamma) override;
     void setAov(const std::string& aov) override;
+    void setWipe(bool on, std::optional<double> split) override;
     void showPanel(const std::string& panel, bool open) override;
     bool pictureSettled() override;
     std::string takeRenderError() override;
@@ -61,6 +64,9 @@ private:
     void collectMessages();
     void refreshPicture();
     void showConverted();
+    // The wipe's reference picture: converted and shown while the wipe is on.
+    void refreshReference();
+    void drawWipeToggle();
     void updateTitle();
     void carryOut(const FileRequest& request);
     // Opens what was dropped on the window (the first file), reporting failures in the HUD.
@@ -69,6 +75,7 @@ private:
     PictureTag currentTag() const;
 
     LoadedRenderer renderer_;  // first: outlives the session that renders with it
+    std::optional<RenderDelegateHandle> referenceDelegate_;  // the wipe's, made when first needed
     Window window_;
     ImGuiLayer imgui_;
     PictureTexture picture_;
@@ -95,7 +102,10 @@ private:
     bool quit_ = false, everyAov_ = false;
     std::chrono::steady_clock::time_point lastPicture_, lastFrame_;
     ViewerModel model_;  // its render session goes before everything above
-    PictureConverter converter_;  // last: stops reading the session's buffers first
+    PictureConverter converter_;  // stops reading the session's buffers first
+    WipeState wipe_;
+    int wipeColumn_ = 0;  // the line's framebuffer column this frame
+    std::optional<ReferencePicture> reference_;  // last: made on the first wipe (needs the GL context)
 };
 
 }  // namespace opal::view

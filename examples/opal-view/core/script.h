@@ -41,6 +41,9 @@
 //   exposure STOPS                     display exposure
 //   gamma G                            display gamma: the shown values to the power 1 / G
 //   aov NAME                           the AOV shown (hd/aov.h)
+//   wipe on|off|X                      the A/B wipe: the engine left of a vertical line, the
+//                                      exact reference (opal:reference) right of it; X puts
+//                                      the line at that fraction of the width (0 to 1)
 //   panel help|stats|settings|probe on|off   the optional panels (the View menu)
 //   gizmos on|off                      the light gizmos over the picture (View > Light gizmos)
 //   camera frame|reset                 frame everything; back to the camera the file opened with
@@ -83,7 +86,7 @@ namespace opal::view {
 
 enum class ActionKind {
     Load, MaterialSet, MaterialReset, MaterialPreset, LightMove, LightTurn, LightSet, LightAdd, LightRemove, LightRename,
-    LightEnable, Environment, Undo, Redo, Setting, Panel, Gizmos, View, Exposure, Gamma, Aov, CameraFrame, CameraReset, CameraOrbit, CameraFocal, CameraUse, CameraFov, CameraClip, Select, Time, Play, Wait, Drag, Screenshot,
+    LightEnable, Environment, Undo, Redo, Setting, Panel, Gizmos, View, Exposure, Gamma, Aov, CameraFrame, CameraReset, CameraOrbit, CameraFocal, CameraUse, CameraFov, CameraClip, Select, Wipe, Time, Play, Wait, Drag, Screenshot,
     SaveExr, SavePng, SaveUsda, Probe, Quit
 };
 

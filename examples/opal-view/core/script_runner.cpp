@@ -238,6 +238,10 @@ bool ScriptRunner::run(const ScriptAction& action, ScriptHost& host) {
     case ActionKind::Exposure: host.setExposure(action.numbers[0]); return true;
     case ActionKind::Gamma: host.setGamma(action.numbers[0]); return true;
     case ActionKind::Aov: host.setAov(action.words[0]); return true;
+    case ActionKind::Wipe:
+        if (action.numbers.empty()) host.setWipe(action.words[0] == "on", std::nullopt);
+        else host.setWipe(true, action.numbers[0]);
+        return true;
     case ActionKind::Panel: host.showPanel(action.words[0], action.words[1] == "on"); return true;
     case ActionKind::Gizmos: host.showPanel("gizmos", action.words[0] == "on"); return true;
     case ActionKind::CameraFrame:

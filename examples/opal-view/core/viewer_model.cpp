@@ -17,6 +17,15 @@
 namespace opal::view {
 namespace {
 
+const hd::Token ReferenceSetting = "opal:reference";
+
+// The settings for the reference session: opal:reference stays on.
+RenderSettingChanges asReference(RenderSettingChanges settings) {
+    for (auto& [key, value] : settings)
+        if (key == ReferenceSetting) value = true;
+    return settings;
+}
+
 bool sameCamera(const hd::CameraDesc& a, const hd::CameraDesc& b) {
     return a.transform == b.transform && a.focalLength == b.focalLength && a.horizontalAperture == b.horizontalAperture &&
            a.verticalAperture == b.verticalAperture && a.nearClip == b.nearClip && a.farClip == b.farClip;
@@ -45,6 +54,7 @@ void ViewerModel::open(const std::filesystem::path& file) {
     const BoundingSphere bounds = sceneBounds(document.scene);
     if (document.scene.renderSettings) scene::applyRenderSettings(*document.scene.renderSettings, delegate_);
 
+    referenceSession_.reset();
     session_.reset();  // one index per delegate at a time: the old one goes first
     file_ = file;
     bounds_ = bounds;
@@ -68,6 +78,26 @@ void ViewerModel::open(const std::filesystem::path& file) {
     playing = false;
     session_ = std::make_unique<RenderSession>(delegate_, std::move(scene), viewport_);
     submitted_ = viewport_;
+    startReference();
+}
+
+void ViewerModel::showReference(hd::RenderDelegate* reference) {
+    if (reference) {
+        const auto settings = reference->renderSettingDescriptors();
+        if (std::none_of(settings.begin(), settings.end(), [](const auto& s) { return s.key == ReferenceSetting; }))
+            throw Error("the renderer has no '" + ReferenceSetting + "' setting to render a reference with");
+    }
+    referenceSession_.reset();
+    referenceDelegate_ = reference;
+    startReference();
+}
+
+void ViewerModel::startReference() {
+    if (!referenceDelegate_ || !session_) return;
+    for (const hd::RenderSettingDescriptor& setting : delegate_.renderSettingDescriptors())
+        referenceDelegate_->setRenderSetting(setting.key, renderSetting(setting.key));
+    referenceDelegate_->setRenderSetting(ReferenceSetting, true);
+    referenceSession_ = std::make_unique<RenderSession>(*referenceDelegate_, edited_->renderedScene(), submitted_);
 }
 
 void ViewerModel::setTime(double timeCode) {
@@ -370,15 +400,19 @@ int ViewerModel::update() {
     if (!edited_->changed() && viewport_ == submitted_ && pendingSettings_.empty()) return 0;
     if (!session_->firstPassDone()) return 0;  // the edits wait, merged, for the next frame
     submitted_ = viewport_;
-    return session_->submit(edited_->renderedScene(), edited_->takeChanges(), viewport_,
-                            std::exchange(pendingSettings_, {}));
+    const scene::Scene scene = edited_->renderedScene();
+    const DirtyPrims changes = edited_->takeChanges();
+    const RenderSettingChanges settings = std::exchange(pendingSettings_, {});
+    if (referenceSession_) referenceSession_->submit(scene, changes, viewport_, asReference(settings));
+    return session_->submit(scene, changes, viewport_, settings);
 }
 
 // A camera moved since the last update() is not in the picture yet, however converged the
 // picture is.
 bool ViewerModel::settled() const {
     if (!session_ || !sameCamera(cameraDesc(camera, bounds_), scene().cameras.at(ViewCameraPath).desc)) return false;
-    return !edited_->changed() && viewport_ == submitted_ && pendingSettings_.empty() && session_->settled();
+    return !edited_->changed() && viewport_ == submitted_ && pendingSettings_.empty() && session_->settled() &&
+           (!referenceSession_ || referenceSession_->settled());
 }
 
 }  // namespace opal::view

@@ -133,13 +133,22 @@ public:
     // The value the delegate has, or the one waiting to be set.
     hd::Value renderSetting(const hd::Token& key) const;
     RenderSession& session() const { return *session_; }
-    // Edits submitted and the session settled (converged on the latest scene).
+    // The A/B wipe's other side: the same scene, camera and settings rendered on
+    // `reference` (a second delegate of the plugin, which must outlive the model or the
+    // next call) with opal:reference on, in a session of its own that every edit also
+    // goes to; null stops it. Throws opal::Error when the delegate has no opal:reference.
+    void showReference(hd::RenderDelegate* reference);
+    RenderSession* referenceSession() const { return referenceSession_.get(); }
+    // Edits submitted and the session settled (converged on the latest scene), the
+    // reference's too while it is shown.
     bool settled() const;
 
 private:
     OrbitCamera initialCamera() const;
     hd::SdfPath addSceneLight(std::string name, scene::SceneLight light, const std::optional<hd::SdfPath>& path);
     RenderSettingChanges changedSettings() const;
+    // A session on the reference delegate with the delegate's settings, opal:reference on.
+    void startReference();
     // Before a material or light edit: the state it changes goes on the undo stack.
     void recordUndo();
     void restore(const EditState& state);
@@ -161,6 +170,8 @@ private:
     double timeCode_ = 0.0;
     std::filesystem::path timeSource_;  // the file opened: what time re-reads (a save writes no samples)
     RenderSettingChanges pendingSettings_;  // for the next submission
+    hd::RenderDelegate* referenceDelegate_ = nullptr;
+    std::unique_ptr<RenderSession> referenceSession_;
     std::unique_ptr<RenderSession> session_;  // last: goes first
 };
 
