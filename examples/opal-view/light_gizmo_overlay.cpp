@@ -43,7 +43,8 @@ void drawArrow(ImDrawList& draw, const LightGizmo& gizmo) {
 void drawLightGizmos(const ViewerModel& model) {
     const ImGuiIO& io = ImGui::GetIO();
     if (io.DisplaySize.x <= 0.0f || io.DisplaySize.y <= 0.0f) return;
-    const GizmoView view{&model.camera, io.DisplaySize.x, io.DisplaySize.y, model.bounds(), model.selectedLight};
+    const OrbitCamera camera = model.viewedCamera();
+    const GizmoView view{&camera, io.DisplaySize.x, io.DisplaySize.y, model.bounds(), model.selectedLight};
     ImDrawList& draw = *ImGui::GetBackgroundDrawList();
     for (const LightGizmo& gizmo : lightGizmos(model.scene(), view)) {
         if (gizmo.shape == LightGizmo::Shape::Arrow) drawArrow(draw, gizmo);

@@ -2,12 +2,14 @@
 
 #include "examples/opal-view/core/color_temperature.h"
 #include "examples/opal-view/core/edited_scene.h"
+#include "examples/opal-view/core/light_flicker_edit.h"
 #include "examples/opal-view/core/light_shape.h"
 #include "examples/scene/scene_lights.h"
 #include "schema/error.h"
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <limits>
 #include <optional>
 #include <utility>
@@ -143,6 +145,19 @@ bool shapeSliders(hd::LightDesc& light) {
     return changed;
 }
 
+// A shadow-field light's flicker (light_flicker_edit.h); scene time plays it (Space).
+bool flickerSliders(hd::LightDesc& light) {
+    if (light.kind != hd::LightKind::ShadowField) return false;
+    float amplitude = float(light.flicker.amplitude), frequency = float(light.flicker.frequency);
+    int seed = int(light.flicker.seed & 0x7fffffff);
+    bool changed = ImGui::SliderFloat("flicker amplitude", &amplitude, 0.0f, 1.0f, "%.3f", ImGuiSliderFlags_AlwaysClamp);
+    changed |= ImGui::SliderFloat("flicker frequency", &frequency, 0.0f, 1000.0f, "%.3g Hz",
+                                  ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
+    changed |= ImGui::InputInt("flicker seed", &seed);
+    if (changed) setFlicker(light, amplitude, frequency, std::max(seed, 0));
+    return changed;
+}
+
 void lightParameters(ViewerModel& model, const hd::SdfPath& path) {
     hd::LightDesc light = model.light(path);
     bool changed = emissionSliders(light);
@@ -153,6 +168,7 @@ void lightParameters(ViewerModel& model, const hd::SdfPath& path) {
     }
     changed |= colorTemperature(light);
     changed |= shapeSliders(light);
+    changed |= flickerSliders(light);
     if (changed) model.setLight(path, light);
     if (light.kind != hd::LightKind::Sphere) return;
     const Imath::V3d p = lightPosition(light);

@@ -1,12 +1,20 @@
 // The material panel: the selected mesh's sigma_s' and sigma_a per channel on logarithmic
-// sliders bounded by its asset's editable range (mm^-1), eta within the range, specular
-// roughness, and the reset to the baked default.
+// sliders bounded by its asset's editable range (mm^-1), or its albedo (a colour) and
+// diffuse mean free path per channel (mm) converted to them; eta within the range,
+// specular roughness, the presets, and the reset to the baked default.
 #pragma once
 
 #include "examples/opal-view/core/viewer_model.h"
 
+#include <string>
+
 namespace opal::view {
 
-void drawMaterialPanel(ViewerModel& model);
+struct MaterialPanelState {
+    bool artist = false;  // albedo + mean free path instead of sigma_s' and sigma_a
+    std::string problem;  // why the last artist edit was refused
+};
+
+void drawMaterialPanel(ViewerModel& model, MaterialPanelState& state);
 
 }  // namespace opal::view

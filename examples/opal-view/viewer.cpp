@@ -19,6 +19,7 @@
 #include "schema/error.h"
 
 #include <glad/gl.h>
+#include <GLFW/glfw3.h>
 #include <imgui.h>
 #include <tbb/task_arena.h>
 
@@ -106,11 +107,13 @@ void Viewer::run() {
 void Viewer::open(const std::filesystem::path& file) {
     converter_.drain();  // it may be reading the open session's buffer
     converter_.take();
+    if (reference_) reference_->drain();
     model_.open(file);
     const ColorConfig config = delegateColorConfig(*renderer_.delegate);
     if (config.file() != display_.config().file()) {
         display_ = DisplayPicture(config);
         converter_.setConfig(config);
+        if (reference_) reference_->reset(config);
         ++settings_.version;
     }
     for (const std::string& warning : model_.takeLoadWarnings()) std::cerr << "opal-view: warning: " << warning << '\n';
@@ -155,8 +158,10 @@ void Viewer::frame() {
         if (submitted > 0) measure_->edited(submitted, Clock::now());
     }
     refreshPicture();
+    refreshReference();
     glViewport(0, 0, width, height);
     picture_.draw();
+    if (wipe_.on && reference_) reference_->draw(wipeColumn_, width, height);
     imgui_.render();
     if (screenshot_) {
         saveScreenshot(*screenshot_, width, height);
@@ -211,11 +216,12 @@ void Viewer::drawInterface() {
     const float tallest = std::max(ImGui::GetIO().DisplaySize.y - HudHeight, 100.0f);
     ImGui::SetNextWindowSizeConstraints(ImVec2(PanelWidth, 0.0f), ImVec2(PanelWidth, tallest));
     ImGui::Begin("Look");
-    drawMaterialPanel(model_);
+    drawMaterialPanel(model_, materialPanel_);
     drawLightPanel(model_, lightPanel_);
     drawEnvironmentPanel(model_, environment_);
     drawCameraPanel(model_);
     drawColorPanel(display_, settings_);
+    drawWipeToggle();
     ImGui::End();
     drawKeyboardHelp(panels_.help);
     drawStatsPanel(*renderer_.delegate, panels_.stats);
@@ -223,11 +229,30 @@ void Viewer::drawInterface() {
     if (panels_.probe) drawProbeTooltip(model_, shownPicture(), shownAov_);
     if (panels_.gizmos) drawLightGizmos(model_);
     drawHud(model_, hud_);
+    if (wipe_.on) wipeColumn_ = drawWipeLine(wipe_);
+}
+
+// The A/B wipe's switch (also W); a renderer without a reference says so in the HUD.
+void Viewer::drawWipeToggle() {
+    bool on = wipe_.on;
+    const bool key = !ImGui::GetIO().WantCaptureKeyboard && !ImGui::GetIO().KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_W, false);
+    if (!ImGui::Checkbox("A/B wipe: engine | reference (W)", &on) && !key) return;
+    try {
+        setWipe(key ? !wipe_.on : on, std::nullopt);
+    } catch (const Error& e) {
+        hud_.message = std::string("error: ") + e.what();
+    }
 }
 
 void Viewer::collectMessages() {
     if (!model_.isOpen()) return;
-    for (const std::string& message : model_.session().takeMessages()) {
+    std::vector<std::string> messages = model_.session().takeMessages();
+    if (RenderSession* reference = model_.referenceSession())
+        for (const std::string& message : reference->takeMessages()) {
+            const std::size_t kind = message.find(": ") + 2;  // after "error: " or "warning: "
+            messages.push_back(message.substr(0, kind) + "reference: " + message.substr(kind));
+        }
+    for (const std::string& message : messages) {
         std::cerr << "opal-view: " << message << '\n';
         hud_.message = message;
         if (message.starts_with("error: ") && renderError_.empty()) renderError_ = message.substr(7);
@@ -242,15 +267,12 @@ bool sameFrame(const PictureTag& a, const PictureTag& b) {
 
 }  // namespace
 
-PictureTag Viewer::currentTag() const {
-    const auto stats = model_.session().delegate().renderStats();
-    const auto passes = stats.find("passes");
-    const int* count = passes == stats.end() ? nullptr : std::get_if<int>(&passes->second);
-    PictureTag tag;
-    tag.passes = count ? *count : 0;
-    tag.syncs = model_.session().status().syncs;
-    tag.settings = settings_.version;
-    return tag;
+PictureTag Viewer::currentTag() const { return pictureTagOf(model_.session(), settings_.version); }
+
+void Viewer::refreshReference() {
+    if (!wipe_.on || !reference_ || !model_.referenceSession()) return;
+    const std::string error = reference_->refresh(*model_.referenceSession(), display_, settings_);
+    if (!error.empty()) hud_.message = "error: reference: " + error;
 }
 
 void Viewer::refreshPicture() {
@@ -328,7 +350,28 @@ const Image& Viewer::shownPicture() {
 }
 
 bool Viewer::pictureSettled() {
-    return model_.settled() && shown_.settled && sameFrame(currentTag(), shown_) && framesSincePanels_ >= PanelLayoutFrames;
+    const bool referenceShown =
+        !wipe_.on || (reference_ && model_.referenceSession() && reference_->settled(*model_.referenceSession(), settings_));
+    return model_.settled() && shown_.settled && sameFrame(currentTag(), shown_) && referenceShown &&
+           framesSincePanels_ >= PanelLayoutFrames;
+}
+
+void Viewer::setWipe(bool on, std::optional<double> split) {
+    if (split && !(*split >= 0.0 && *split <= 1.0))
+        throw Error("wipe " + std::to_string(*split) + ": the line's place is a fraction of the width, 0 to 1");
+    if (split) wipe_.split = *split;
+    if (on == wipe_.on) return;
+    if (on) {
+        if (!referenceDelegate_) referenceDelegate_.emplace(renderer_.plugin.createRenderDelegate());
+        if (!reference_) reference_.emplace(display_.config());
+        reference_->reset(display_.config());  // a new session: its pictures start again
+        model_.showReference(referenceDelegate_->get());
+    } else {
+        reference_->drain();
+        model_.showReference(nullptr);
+    }
+    wipe_.on = on;
+    framesSincePanels_ = 0;
 }
 
 void Viewer::beginMeasure() { measure_.emplace(Clock::now()); }

@@ -16,11 +16,14 @@
 #include "examples/opal-view/hud.h"
 #include "examples/opal-view/imgui_layer.h"
 #include "examples/opal-view/light_panel.h"
+#include "examples/opal-view/material_panel.h"
 #include "examples/opal-view/menu_bar.h"
 #include "examples/opal-view/panel_visibility.h"
 #include "examples/opal-view/gl/picture_texture.h"
+#include "examples/opal-view/reference_picture.h"
 #include "examples/opal-view/view_options.h"
 #include "examples/opal-view/window.h"
+#include "examples/opal-view/wipe_overlay.h"
 
 #include <chrono>
 #include <optional>
@@ -42,6 +45,7 @@ public:
     void setExposure(double stops) override;
     void setGamma(double gamma) override;
     void setAov(const std::string& aov) override;
+    void setWipe(bool on, std::optional<double> split) override;
     void showPanel(const std::string& panel, bool open) override;
     bool pictureSettled() override;
     std::string takeRenderError() override;
@@ -68,6 +72,9 @@ private:
     bool gpuDisplay() const;
     // What the probe reports as shown: read back from the GPU when it changed since.
     const Image& shownPicture();
+    // The wipe's reference picture: converted and shown while the wipe is on.
+    void refreshReference();
+    void drawWipeToggle();
     void updateTitle();
     void carryOut(const FileRequest& request);
     // Opens what was dropped on the window (the first file), reporting failures in the HUD.
@@ -76,6 +83,7 @@ private:
     PictureTag currentTag() const;
 
     LoadedRenderer renderer_;  // first: outlives the session that renders with it
+    std::optional<RenderDelegateHandle> referenceDelegate_;  // the wipe's, made when first needed
     Window window_;
     ImGuiLayer imgui_;
     PictureTexture picture_;
@@ -94,6 +102,7 @@ private:
     RecentFiles recent_;
     PanelVisibility panels_;
     LightPanelState lightPanel_;
+    MaterialPanelState materialPanel_;
     std::string settingsProblem_;
     EnvironmentPanelState environment_;
     int framesSincePanels_ = 0;  // interface frames drawn since a script opened or closed a panel
@@ -104,7 +113,10 @@ private:
     bool quit_ = false, everyAov_ = false;
     std::chrono::steady_clock::time_point lastPicture_, lastFrame_;
     ViewerModel model_;  // its render session goes before everything above
-    PictureConverter converter_;  // last: stops reading the session's buffers first
+    PictureConverter converter_;  // stops reading the session's buffers first
+    WipeState wipe_;
+    int wipeColumn_ = 0;  // the line's framebuffer column this frame
+    std::optional<ReferencePicture> reference_;  // last: made on the first wipe (needs the GL context)
 };
 
 }  // namespace opal::view

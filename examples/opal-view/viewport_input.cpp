@@ -29,11 +29,11 @@ void dragSelectedLight(ViewerModel& model, const Pointer& pointer) {
     if (!model.selectedLight) return;
     const hd::LightDesc& light = model.light(*model.selectedLight);
     if (light.kind == hd::LightKind::Distant) {
-        if (const auto turned = distantLightGesture(model.camera, pointer, light)) model.setLight(*model.selectedLight, *turned);
+        if (const auto turned = distantLightGesture(model.viewedCamera(), pointer, light)) model.setLight(*model.selectedLight, *turned);
         return;
     }
     if (light.kind != hd::LightKind::Sphere) return;  // point, sphere and spot lights
-    if (const auto position = lightGesture(model.camera, pointer, lightPosition(light), model.bounds().center))
+    if (const auto position = lightGesture(model.viewedCamera(), pointer, lightPosition(light), model.bounds().center))
         model.moveLight(*model.selectedLight, *position);
 }
 
@@ -47,7 +47,7 @@ void handleViewportInput(ViewerModel& model, PanelVisibility& panels) {
         if (ImGui::IsKeyPressed(GLFW_KEY_Y, true)) model.redo();
     }
     if (!io.WantCaptureKeyboard && !io.KeyCtrl) {
-        if (ImGui::IsKeyPressed(GLFW_KEY_F, false)) model.frameAll();
+        if (ImGui::IsKeyPressed(GLFW_KEY_F, false)) io.KeyShift ? model.frameAll() : model.frameSelection();
         if (ImGui::IsKeyPressed(GLFW_KEY_R, false)) model.resetCamera();
         if (ImGui::IsKeyPressed(GLFW_KEY_H, false)) panels.help = !panels.help;
         if (ImGui::IsKeyPressed(GLFW_KEY_P, false)) panels.probe = !panels.probe;
@@ -56,7 +56,9 @@ void handleViewportInput(ViewerModel& model, PanelVisibility& panels) {
     }
     if (io.WantCaptureMouse || io.DisplaySize.x <= 0.0f || io.DisplaySize.y <= 0.0f) return;
     const Pointer pointer = pointerOf(io);
-    cameraGesture(model.camera, pointer);
+    // A gesture through a scene camera moves the free camera from there on (usdview's way).
+    OrbitCamera moved = model.viewedCamera();
+    if (cameraGesture(moved, pointer)) model.useFreeCamera() = moved;
     dragSelectedLight(model, pointer);
 }
 

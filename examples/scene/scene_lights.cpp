@@ -63,6 +63,9 @@ void readDome(PrimReader& reader, hd::LightDesc& desc, const std::filesystem::pa
         if (value != "latlong" && value != "automatic")
             reader.failAt(*format, "is " + quotedName(value) + "; Opal reads lat-long images only (\"latlong\")");
     }
+    // UsdLux has no camera visibility for a dome; Opal's own attribute (opal-view's
+    // "show as background" switch saves it).
+    desc.visibleToCamera = reader.get<Bool>("opal:visibleToCamera").value_or(desc.visibleToCamera);
     reader.ignore("guideRadius");  // viewport display only
 }
 

@@ -17,8 +17,12 @@ public:
 
     const Scene& scene() const { return scene_; }
     // A host that edits the scene (a viewer) hands the edited copy over before a sync, from
-    // the thread that syncs, and marks what changed dirty. Prims keep their paths.
-    void setScene(Scene scene) { scene_ = std::move(scene); }
+    // the thread that syncs, and marks what changed dirty. Prims keep their paths. The
+    // copy is described at its own timeCode: that is the time flickering lights take.
+    void setScene(Scene scene) {
+        scene_ = std::move(scene);
+        time_ = scene_.timeCode / scene_.timeCodesPerSecond;
+    }
 
     // The scene time in seconds (0 at first) at which time-varying prims are described:
     // a shadow-field light's flicker, and the prims scene.timeVarying names (animated

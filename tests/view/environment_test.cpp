@@ -1,7 +1,8 @@
 // The environment panel's edits, end to end through scripts: a dome with a half-bright
 // lat-long image, turned about the up axis. Truths: turning it 90 degrees twice gives the
 // picture of one 180-degree turn; the turned dome, saved, renders in opal-render as the
-// viewer shows it; the background switch hides the dome from the camera only.
+// viewer shows it; the background switch hides the dome from the camera only, and the
+// saved layer keeps it.
 #include "tests/view/exr_compare.h"
 
 #include <OpenImageIO/imageio.h>
@@ -35,7 +36,7 @@ TEST(Environment, TurningTheDomeRelightsTheAssetAsTheSavedSceneRendersIt) {
                                  "environment rotate 90\nenvironment rotate 90\n" + saveExr(dir, "twice.exr") +
                                  "environment rotate -180\nenvironment rotate 180\n" + saveExr(dir, "viewer.exr") +
                                  "save usda " + scriptWord(dir / "saved.usda") + "\nenvironment background off\n" +
-                                 saveExr(dir, "hidden.exr") + "quit\n");
+                                 saveExr(dir, "hidden.exr") + "save usda " + scriptWord(dir / "hidden.usda") + "\nquit\n");
     const ViewRun run = runOpalView(dir, "--size 320x240 --script " + shellWord(dir / "turn.script"));
     ASSERT_EQ(run.exitCode, 0) << run.err;
     const ReadImage still = readImage(dir / "still.exr"), twice = readImage(dir / "twice.exr"),
@@ -58,6 +59,13 @@ TEST(Environment, TurningTheDomeRelightsTheAssetAsTheSavedSceneRendersIt) {
     EXPECT_EQ(hidden.at(0, 0, r), 0.0f);
     EXPECT_EQ(hidden.at(0, 0, a), 0.0f);
     EXPECT_DOUBLE_EQ(channelMean(hidden, "subsurface.G"), channelMean(once, "subsurface.G"));
+
+    // The switch is saved: opal-render leaves the background out as the viewer did.
+    const ViewRun hiddenRender = runOpalRender(dir, shellWord(dir / "hidden.usda") + " -o " + shellWord(dir / "hidden-render.exr"));
+    ASSERT_EQ(hiddenRender.exitCode, 0) << hiddenRender.err;
+    const double hiddenDifference = maxDifference(hidden, readImage(dir / "hidden-render.exr"));
+    std::cout << "background hidden, viewer vs opal-render on the saved layer: EXR max difference " << hiddenDifference << '\n';
+    EXPECT_LE(hiddenDifference, 1e-5);
 }
 
 TEST(Environment, WithoutADomeOrWithAMissingImageTheScriptFailsWithItsLine) {

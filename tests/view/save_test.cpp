@@ -175,6 +175,16 @@ def Camera "Camera"
     EXPECT_NE(bad.err.find(":2: </Bulb> is not a distant light"), std::string::npos) << bad.err;
 }
 
+// A baked light layer (flame.usda, a field made in code with every map a uniform radiance)
+// written beside `asset`, and the script lines that open the asset lit by it alone, as
+// </_OpalView/Lights/Flame>.
+std::string litByFlame(const SceneDir& dir, const std::filesystem::path& asset) {
+    writeShadowFieldFile(dir / "flame.light.opal", uniformShadowField([](std::uint32_t, std::uint64_t) { return 0.5; }));
+    writeShadowFieldLayer(dir / "flame.usda", "flame", "./flame.light.opal", std::nullopt);
+    return "load " + scriptWord(asset) + "\nlight disable /_OpalView/KeyLight\nlight add shadowfield " +
+           scriptWord(dir / "flame.usda") + " /_OpalView/Lights/Flame\n";
+}
+
 // A baked light layer added as a shadow-field light (here a field made in code, every map
 // a uniform radiance) lights the asset alone, is saved as an OpalShadowFieldLight naming
 // the field, and opal-render draws the saved scene as the viewer showed it. A missing file
@@ -182,11 +192,7 @@ def Camera "Camera"
 TEST(Save, AShadowFieldLightAddedFromABakedLightLayerIsSaved) {
     const SceneDir dir;
     const std::filesystem::path asset = dir.writeSphereAsset("sphere");
-    writeShadowFieldFile(dir / "flame.light.opal", uniformShadowField([](std::uint32_t, std::uint64_t) { return 0.5; }));
-    writeShadowFieldLayer(dir / "flame.usda", "flame", "./flame.light.opal", std::nullopt);
-    dir.write("field.script", "load " + scriptWord(asset) + "\nlight disable /_OpalView/KeyLight\nlight add shadowfield " +
-                                  scriptWord(dir / "flame.usda") + " /_OpalView/Lights/Flame\n" + saveEverything(dir) +
-                                  "quit\n");
+    dir.write("field.script", litByFlame(dir, asset) + saveEverything(dir) + "quit\n");
     const ViewRun run = runOpalView(dir, "--size 480x320 --script " + shellWord(dir / "field.script"));
     ASSERT_EQ(run.exitCode, 0) << run.err;
     // Measured 1.5e-5 at a specular pixel of 0.022: one step of its half floats there.
@@ -205,6 +211,39 @@ TEST(Save, AShadowFieldLightAddedFromABakedLightLayerIsSaved) {
     const ViewRun notLight = runOpalView(dir, "--size 160x120 --script " + shellWord(bad));
     EXPECT_EQ(notLight.exitCode, 1);
     EXPECT_NE(notLight.err.find(":2: " + asset.string() + ": not a baked light layer"), std::string::npos) << notLight.err;
+}
+
+// A shadow-field light's flicker set in the viewer is saved: opal-render at the same
+// scene time (time code 12 at 24 per second: 0.5 s) draws the saved layer as the viewer
+// showed it, and the flicker changes the picture from the steady light's. A flicker on
+// another kind of light fails with its line.
+TEST(Save, AShadowFieldLightsFlickerIsSaved) {
+    const SceneDir dir;
+    const std::filesystem::path asset = dir.writeSphereAsset("sphere");
+    dir.write("flicker.script", litByFlame(dir, asset) + saveExr(dir, "steady.exr") +
+                                    "light set /_OpalView/Lights/Flame flicker 0.9 3 7\ntime 12\n" + saveExr(dir, "viewer.exr") +
+                                    "save usda " + scriptWord(dir / "saved.usda") + "\nquit\n");
+    const ViewRun run = runOpalView(dir, "--size 240x160 --script " + shellWord(dir / "flicker.script"));
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const std::string layer = slurpFile(dir / "saved.usda");
+    EXPECT_NE(layer.find("float opal:flicker:amplitude = 0.9"), std::string::npos) << layer;
+    EXPECT_NE(layer.find("float opal:flicker:frequency = 3"), std::string::npos) << layer;
+    EXPECT_NE(layer.find("int opal:flicker:seed = 7"), std::string::npos) << layer;
+    const ViewRun render = runOpalRender(dir, shellWord(dir / "saved.usda") + " --time 0.5 -o " + shellWord(dir / "render.exr"));
+    ASSERT_EQ(render.exitCode, 0) << render.err;
+    const ReadImage viewer = readImage(dir / "viewer.exr"), steady = readImage(dir / "steady.exr");
+    ASSERT_GT(channelMean(steady, "subsurface.G"), 0.0);
+    const double difference = maxDifference(viewer, readImage(dir / "render.exr"));
+    std::cout << "flickering light at 0.5 s, viewer vs opal-render on the saved layer: EXR max difference " << difference
+              << "; vs the steady light " << maxDifference(viewer, steady) << '\n';
+    EXPECT_LE(difference, 1.0 / 64.0) << "one step of the EXR's half floats at the brightest values (16 to 32)";
+    EXPECT_GT(maxDifference(viewer, steady), 0.5) << "the flicker changed the light";
+
+    const std::filesystem::path bad = dir.write(
+        "bad.script", "load " + scriptWord(asset) + "\nlight set /_OpalView/KeyLight flicker 0.5 8 0\n");
+    const ViewRun point = runOpalView(dir, "--size 160x120 --script " + shellWord(bad));
+    EXPECT_EQ(point.exitCode, 1);
+    EXPECT_NE(point.err.find(":2: only a shadow-field light flickers"), std::string::npos) << point.err;
 }
 
 TEST(Save, TheSavedLayerOfASceneKeepsItsPresetAndPlacesPrimsUnderGroups) {

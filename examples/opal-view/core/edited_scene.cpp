@@ -71,6 +71,11 @@ void EditedScene::setTime(const scene::Scene* atTime, double timeCode) {
             mine->second.desc = light->second.desc;
             dirty_[id] |= LightBits;
         }
+        const auto camera = atTime->cameras.find(id);
+        if (camera != atTime->cameras.end() && scene_.cameras.count(id)) {
+            scene_.cameras.at(id).desc = camera->second.desc;
+            dirty_[id] |= hd::Dirty::Params | hd::Dirty::Transform;
+        }
         const auto mesh = atTime->meshes.find(id);
         if (mesh != atTime->meshes.end() && scene_.meshes.count(id)) {
             scene_.meshes.at(id).desc.transform = mesh->second.desc.transform;

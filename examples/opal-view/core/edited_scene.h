@@ -40,7 +40,7 @@ public:
     void setMaterial(const hd::SdfPath& path, const hd::MaterialDesc& desc);
     void setLight(const hd::SdfPath& path, const hd::LightDesc& desc);
     void setCamera(const hd::SdfPath& path, const hd::CameraDesc& desc);
-    // The scene at another time code: the time-varying lights and mesh transforms take
+    // The scene at another time code: the time-varying lights, cameras and mesh transforms take
     // their values from `atTime` (the file read at that time; null when nothing in it is
     // time-varying) and flickering lights the time in seconds. Not an edit: no revision.
     void setTime(const scene::Scene* atTime, double timeCode);

@@ -1,8 +1,8 @@
 // The scene's environment as the Environment panel and scripts edit it: the first dome
 // light in path order, its lat-long texture, its turn about the world's up axis (+Y) and
 // whether the camera sees it behind the asset. The background switch is the delegate's
-// (hd::LightDesc::visibleToCamera); a scene layer has no UsdLux attribute for it, so a
-// saved scene does not keep it.
+// (hd::LightDesc::visibleToCamera); UsdLux has no attribute for it, so a saved scene
+// keeps it as Opal's own `opal:visibleToCamera`, which the scene reader reads.
 #pragma once
 
 #include "examples/scene/scene.h"

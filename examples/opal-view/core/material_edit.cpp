@@ -1,6 +1,7 @@
 #include "examples/opal-view/core/material_edit.h"
 
 #include "schema/error.h"
+#include "schema/scatter/material.h"
 
 #include <sstream>
 
@@ -30,6 +31,22 @@ void setChannels(Rgb& target, std::span<const double> values, double lo, double 
     }
 }
 
+// Albedo or mean free path replaced in the artist's terms (toArtist of the material),
+// the rest kept, and back to coefficients within the asset's range.
+void setArtistChannels(Material& material, std::span<const double> values, std::string_view parameter,
+                       const EditableRange& range) {
+    requireCount(values, 3, parameter);
+    ArtistMaterial artist = toArtist(material);
+    Rgb& target = parameter == "albedo" ? artist.albedo : artist.meanFreePath;
+    for (int c = 0; c < 3; ++c) target[c] = values[c];
+    const Material converted = fromArtist(artist);
+    const double sigmaS[] = {converted.sigmaSPrime[0], converted.sigmaSPrime[1], converted.sigmaSPrime[2]};
+    const double sigmaA[] = {converted.sigmaA[0], converted.sigmaA[1], converted.sigmaA[2]};
+    const std::string via = " (from " + std::string(parameter) + ")";
+    setChannels(material.sigmaSPrime, sigmaS, range.sigmaSPrimeMin, range.sigmaSPrimeMax, "sigma_s'" + via);
+    setChannels(material.sigmaA, sigmaA, range.sigmaAMin, range.sigmaAMax, "sigma_a" + via);
+}
+
 }  // namespace
 
 hd::MaterialDesc bakedDefault(const TranslucentAsset& asset) {
@@ -45,6 +62,8 @@ hd::MaterialDesc withParameter(hd::MaterialDesc desc, std::string_view parameter
         setChannels(desc.subsurface.sigmaSPrime, values, range.sigmaSPrimeMin, range.sigmaSPrimeMax, "sigma_s'");
     } else if (parameter == "sigma_a") {
         setChannels(desc.subsurface.sigmaA, values, range.sigmaAMin, range.sigmaAMax, "sigma_a");
+    } else if (parameter == "albedo" || parameter == "mfp") {
+        setArtistChannels(desc.subsurface, values, parameter, range);
     } else if (parameter == "eta") {
         requireCount(values, 1, parameter);
         requireWithin(values[0], range.etaMin, range.etaMax, "eta");
@@ -54,7 +73,7 @@ hd::MaterialDesc withParameter(hd::MaterialDesc desc, std::string_view parameter
         requireWithin(values[0], 0.0, 1.0, "specular roughness");
         desc.specularRoughness = values[0];
     } else {
-        throw Error("unknown material parameter '" + std::string(parameter) + "' (sigma_s, sigma_a, eta, roughness)");
+        throw Error("unknown material parameter '" + std::string(parameter) + "' (sigma_s, sigma_a, albedo, mfp, eta, roughness)");
     }
     return desc;
 }

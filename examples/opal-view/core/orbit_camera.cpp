@@ -55,6 +55,29 @@ void setFocalLength(OrbitCamera& camera, double focalLength) {
     camera.focalLength = focalLength;
 }
 
+double horizontalFieldOfView(const OrbitCamera& camera, double aspect) {
+    return degrees(2.0 * std::atan(0.5 * visibleFilm(camera, aspect).x / camera.focalLength));
+}
+
+void setHorizontalFieldOfView(OrbitCamera& camera, double fieldOfView, double aspect) {
+    if (!(fieldOfView >= 1.0 && fieldOfView <= 170.0))
+        throw Error("field of view " + std::to_string(fieldOfView) + " degrees is outside 1 to 170");
+    setFocalLength(camera, 0.5 * visibleFilm(camera, aspect).x / std::tan(radians(0.5 * fieldOfView)));
+}
+
+void setClipping(OrbitCamera& camera, double nearClip, double farClip) {
+    if (!(nearClip > 0.0 && farClip > nearClip && std::isfinite(farClip)))
+        throw Error("clipping range " + std::to_string(nearClip) + " to " + std::to_string(farClip) +
+                    " is not 0 < near < far");
+    camera.nearClip = nearClip;
+    camera.farClip = farClip;
+}
+
+void setAutomaticClipping(OrbitCamera& camera) {
+    camera.nearClip.reset();
+    camera.farClip.reset();
+}
+
 hd::CameraDesc cameraDesc(const OrbitCamera& camera, const BoundingSphere& scene) {
     hd::CameraDesc desc;
     desc.transform = cameraToWorld(camera);
@@ -62,8 +85,8 @@ hd::CameraDesc cameraDesc(const OrbitCamera& camera, const BoundingSphere& scene
     desc.horizontalAperture = camera.horizontalAperture;
     desc.verticalAperture = camera.verticalAperture;
     const double reach = (eyePosition(camera) - scene.center).length() + scene.radius;
-    desc.nearClip = reach * 1e-4;
-    desc.farClip = reach * 2.0;
+    desc.nearClip = camera.nearClip.value_or(reach * 1e-4);
+    desc.farClip = camera.farClip.value_or(reach * 2.0);
     return storable(desc);
 }
 

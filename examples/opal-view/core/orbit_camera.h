@@ -10,6 +10,8 @@
 #include <Imath/ImathMatrix.h>
 #include <Imath/ImathVec.h>
 
+#include <optional>
+
 namespace opal::view {
 
 struct OrbitCamera {
@@ -20,6 +22,9 @@ struct OrbitCamera {
     double focalLength = 50.0;
     double horizontalAperture = 36.0;  // same unit as the focal length
     double verticalAperture = 24.0;
+    // Clipping planes (distances along the view axis); unset, cameraDesc picks planes
+    // that hold the whole scene from wherever the camera is.
+    std::optional<double> nearClip, farClip;
 };
 
 // The film the viewport shows: the camera's film fitted into the viewport's aspect (width
@@ -31,14 +36,23 @@ Imath::V2d visibleFilm(const OrbitCamera& camera, double aspect);
 Imath::M44d cameraToWorld(const OrbitCamera& camera);
 Imath::V3d eyePosition(const OrbitCamera& camera);
 // A UsdGeomCamera with the camera's film (the delegate fits it into the viewport), with
-// clipping planes that hold the whole sphere `scene` from wherever the camera is, its
-// values as a layer stores them (layer_precision.h).
+// the camera's clipping planes, or without them planes that hold the whole sphere `scene`
+// from wherever the camera is, its values as a layer stores them (layer_precision.h).
 hd::CameraDesc cameraDesc(const OrbitCamera& camera, const BoundingSphere& scene);
 // Half the smaller field of view, radians, for a viewport of this aspect (width / height).
 double halfFieldOfView(const OrbitCamera& camera, double aspect);
 
 // A focal length in [1, 10000] (the film's unit); throws opal::Error naming the range.
 void setFocalLength(OrbitCamera& camera, double focalLength);
+// The horizontal field of view of the film the viewport shows (visibleFilm), degrees; the
+// setter changes the focal length to give it (throws opal::Error outside 1 to 170 degrees,
+// or for a focal length setFocalLength refuses).
+double horizontalFieldOfView(const OrbitCamera& camera, double aspect);
+void setHorizontalFieldOfView(OrbitCamera& camera, double degrees, double aspect);
+// Fixed clipping planes, 0 < near < far (throws opal::Error naming both otherwise), or
+// automatic ones again.
+void setClipping(OrbitCamera& camera, double nearClip, double farClip);
+void setAutomaticClipping(OrbitCamera& camera);
 
 void tumble(OrbitCamera& camera, double dxPixels, double dyPixels);
 void track(OrbitCamera& camera, double dxPixels, double dyPixels, int viewportHeight, double aspect);

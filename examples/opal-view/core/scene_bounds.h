@@ -16,5 +16,8 @@ struct BoundingSphere {
 // The centre of the world-space bounding box and the farthest point's distance from it.
 // A scene without visible meshes (or points) gives the unit sphere at the origin.
 BoundingSphere sceneBounds(const scene::Scene& scene);
+// The same for one mesh of the scene (what "frame selection" fits); throws opal::Error
+// naming the path when the scene has no such mesh.
+BoundingSphere meshBounds(const scene::Scene& scene, const hd::SdfPath& mesh);
 
 }  // namespace opal::view

@@ -5,6 +5,10 @@
 //   load PATH                          open a scene or asset layer
 //   material set sigma_s|sigma_a R G B the selected mesh's material, mm^-1 per channel
 //   material set eta|roughness V
+//   material set albedo R G B          the total diffuse reflectance per channel (0 to 1),
+//                                      the mean free path kept (sigma_s', sigma_a converted)
+//   material set mfp R G B             the diffuse mean free path per channel (mm), the
+//                                      albedo kept
 //   material reset                     back to the asset's baked default
 //   material preset NAME               a measured material (marble, skin1, ...), eta included
 //   light move PATH X Y Z              a light's position in world space
@@ -18,6 +22,8 @@
 //   light set PATH cone DEGREES        a sphere light's cone (0 to 180 off its axis): a spot
 //   light set PATH softness S          a spot light's cone softness, 0 to 1
 //   light set PATH angle DEGREES       a distant light's angular diameter, 0 to 180
+//   light set PATH flicker AMPLITUDE HZ SEED   a shadow-field light's flicker (amplitude 0
+//                                      to 1, 0: steady; 0 to 1000 Hz; a whole seed)
 //   light add point|sphere|spot|distant|dome [PATH]
 //                                      a new light (default: under /_OpalView/Lights), selected
 //   light add shadowfield LAYER.usda [PATH]  a baked light layer (opal-bake light) as a new
@@ -35,12 +41,24 @@
 //   exposure STOPS                     display exposure
 //   gamma G                            display gamma: the shown values to the power 1 / G
 //   aov NAME                           the AOV shown (hd/aov.h)
+//   wipe on|off|X                      the A/B wipe: the engine left of a vertical line, the
+//                                      exact reference (opal:reference) right of it; X puts
+//                                      the line at that fraction of the width (0 to 1)
 //   panel help|stats|settings|probe on|off   the optional panels (the View menu)
 //   gizmos on|off                      the light gizmos over the picture (View > Light gizmos)
-//   camera frame|reset
-//   camera orbit YAW PITCH             degrees, added to the camera's
-//   camera focal MM                    the lens' focal length (film 36 x 24 mm unless the
-//                                      scene's camera says otherwise), 1 to 10000
+//   camera frame|reset                 frame everything; back to the camera the file opened with
+//   camera frame selection             frame the selected mesh
+//   camera use PATH|free               look through one of the scene's cameras (it follows
+//                                      scene time), or the free camera from where it looks
+//   camera orbit YAW PITCH             degrees, added to the free camera's
+//   camera focal MM                    the free camera's focal length (film 36 x 24 mm unless
+//                                      the scene's camera says otherwise), 1 to 10000
+//   camera fov DEGREES                 the free camera's horizontal field of view, 1 to 170
+//                                      (the focal length that gives it in this window)
+//   camera clip NEAR FAR|auto          the free camera's clipping planes, or automatic ones
+//                                      holding the whole scene
+//   select PATH                        a mesh (the material panel edits it, frame selection
+//                                      frames it) or a light (the viewport drags it)
 //   time CODE                          scene time (the layer's time codes), paused there
 //   play | pause                       scene time runs with the wall clock, or stops
 //   wait [SECONDS]                     until the picture converged (default 300 s)
@@ -68,7 +86,7 @@ namespace opal::view {
 
 enum class ActionKind {
     Load, MaterialSet, MaterialReset, MaterialPreset, LightMove, LightTurn, LightSet, LightAdd, LightRemove, LightRename,
-    LightEnable, Environment, Undo, Redo, Setting, Panel, Gizmos, View, Exposure, Gamma, Aov, CameraFrame, CameraReset, CameraOrbit, CameraFocal, Time, Play, Wait, Drag, Screenshot,
+    LightEnable, Environment, Undo, Redo, Setting, Panel, Gizmos, View, Exposure, Gamma, Aov, CameraFrame, CameraReset, CameraOrbit, CameraFocal, CameraUse, CameraFov, CameraClip, Select, Wipe, Time, Play, Wait, Drag, Screenshot,
     SaveExr, SavePng, SaveUsda, Probe, Quit
 };
 

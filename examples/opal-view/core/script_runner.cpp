@@ -4,6 +4,7 @@
 #include "examples/opal-view/core/edited_scene.h"
 #include "examples/opal-view/core/environment_edit.h"
 #include "examples/opal-view/core/light_drag.h"
+#include "examples/opal-view/core/light_flicker_edit.h"
 #include "examples/opal-view/core/light_shape.h"
 #include "schema/error.h"
 
@@ -59,13 +60,14 @@ void runLight(const ScriptAction& action, ViewerModel& model) {
     if (action.kind == ActionKind::LightTurn) {
         if (light.kind != hd::LightKind::Distant)
             throw Error("<" + path + "> is not a distant light (light move places the others)");
-        return model.setLight(path, turnedLight(model.camera, light, action.numbers[0], action.numbers[1]));
+        return model.setLight(path, turnedLight(model.viewedCamera(), light, action.numbers[0], action.numbers[1]));
     }
     const std::string& parameter = action.words.at(1);
     if (parameter == "intensity") light.intensity = action.numbers[0];
     if (parameter == "exposure") light.exposure = action.numbers[0];
     if (parameter == "color") light.color = Rgb{action.numbers[0], action.numbers[1], action.numbers[2]};
     if (parameter == "temperature") setColorTemperature(light, action.numbers.empty() ? 0.0 : action.numbers[0]);
+    if (parameter == "flicker") setFlicker(light, action.numbers[0], action.numbers[1], action.numbers[2]);
     for (const std::string_view shape : lightShapeParameters())
         if (parameter == shape) setShapeParameter(light, parameter, action.numbers[0]);
     model.setLight(path, light);
@@ -83,11 +85,34 @@ void runEnvironment(const ScriptAction& action, ViewerModel& model) {
 }
 
 void runCamera(const ScriptAction& action, ViewerModel& model) {
-    if (action.kind == ActionKind::CameraFrame) return model.frameAll();
-    if (action.kind == ActionKind::CameraReset) return model.resetCamera();
-    if (action.kind == ActionKind::CameraFocal) return setFocalLength(model.camera, action.numbers[0]);
-    model.camera.yaw += action.numbers[0];
-    model.camera.pitch = std::clamp(model.camera.pitch + action.numbers[1], -89.0, 89.0);
+    switch (action.kind) {
+    case ActionKind::CameraFrame: return action.words.empty() ? model.frameAll() : model.frameSelection();
+    case ActionKind::CameraReset: return model.resetCamera();
+    case ActionKind::CameraUse:
+        if (action.words[0] == "free") model.useFreeCamera();
+        else model.useCamera(action.words[0]);
+        return;
+    case ActionKind::CameraFocal: return setFocalLength(model.useFreeCamera(), action.numbers[0]);
+    case ActionKind::CameraFov: return setHorizontalFieldOfView(model.useFreeCamera(), action.numbers[0], model.aspect());
+    case ActionKind::CameraClip:
+        if (action.numbers.empty()) return setAutomaticClipping(model.useFreeCamera());
+        return setClipping(model.useFreeCamera(), action.numbers[0], action.numbers[1]);
+    default: {
+        OrbitCamera& camera = model.useFreeCamera();
+        camera.yaw += action.numbers[0];
+        camera.pitch = std::clamp(camera.pitch + action.numbers[1], -89.0, 89.0);
+    }
+    }
+}
+
+// A mesh or a light of the scene.
+void runSelect(const std::string& path, ViewerModel& model) {
+    if (model.scene().meshes.count(path)) return model.selectMesh(path);
+    if (model.scene().lights.count(path)) {
+        model.selectedLight = path;
+        return;
+    }
+    throw Error("no mesh or light <" + path + "> in the scene");
 }
 
 // The sigma_a green slider swept log-uniformly over the asset's range, 2 s a sweep.
@@ -213,12 +238,20 @@ bool ScriptRunner::run(const ScriptAction& action, ScriptHost& host) {
     case ActionKind::Exposure: host.setExposure(action.numbers[0]); return true;
     case ActionKind::Gamma: host.setGamma(action.numbers[0]); return true;
     case ActionKind::Aov: host.setAov(action.words[0]); return true;
+    case ActionKind::Wipe:
+        if (action.numbers.empty()) host.setWipe(action.words[0] == "on", std::nullopt);
+        else host.setWipe(true, action.numbers[0]);
+        return true;
     case ActionKind::Panel: host.showPanel(action.words[0], action.words[1] == "on"); return true;
     case ActionKind::Gizmos: host.showPanel("gizmos", action.words[0] == "on"); return true;
     case ActionKind::CameraFrame:
     case ActionKind::CameraReset:
     case ActionKind::CameraOrbit:
-    case ActionKind::CameraFocal: runCamera(action, model); return true;
+    case ActionKind::CameraFocal:
+    case ActionKind::CameraUse:
+    case ActionKind::CameraFov:
+    case ActionKind::CameraClip: runCamera(action, model); return true;
+    case ActionKind::Select: runSelect(action.words[0], model); return true;
     case ActionKind::Time:
         model.playing = false;
         model.setTime(action.numbers[0]);

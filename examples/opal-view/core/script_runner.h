@@ -9,6 +9,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,9 @@ public:
     virtual void setExposure(double stops) = 0;
     virtual void setGamma(double gamma) = 0;  // throws opal::Error unless positive
     virtual void setAov(const std::string& aov) = 0;
+    // The A/B wipe on or off; a split (a fraction of the width, 0 to 1; throws opal::Error
+    // otherwise) moves its line and turns it on.
+    virtual void setWipe(bool on, std::optional<double> split) = 0;
     // Opens or closes an optional panel: help, stats, settings, probe, or the light gizmos.
     virtual void showPanel(const std::string& panel, bool open) = 0;
     // The renderer converged on the latest edit and the window shows that picture.

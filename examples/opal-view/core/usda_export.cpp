@@ -149,6 +149,7 @@ void writeLightKind(usda::Prim& prim, const hd::LightDesc& light, const std::fil
             usda::Attribute& file = prim.addAttribute("inputs:texture:file", Value::asset(anchored(light.textureFile, target)));
             file.metadata.set("colorSpace", Value::token(light.textureColorSpace));
         }
+        prim.addAttribute("opal:visibleToCamera", Value::make<types::Bool>(light.visibleToCamera));
         break;
     case hd::LightKind::ShadowField:
         prim.addAttribute("opal:field", Value::asset(anchored(light.shadowField, target)));

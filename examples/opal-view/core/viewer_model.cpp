@@ -17,6 +17,15 @@
 namespace opal::view {
 namespace {
 
+const hd::Token ReferenceSetting = "opal:reference";
+
+// The settings for the reference session: opal:reference stays on.
+RenderSettingChanges asReference(RenderSettingChanges settings) {
+    for (auto& [key, value] : settings)
+        if (key == ReferenceSetting) value = true;
+    return settings;
+}
+
 bool sameCamera(const hd::CameraDesc& a, const hd::CameraDesc& b) {
     return a.transform == b.transform && a.focalLength == b.focalLength && a.horizontalAperture == b.horizontalAperture &&
            a.verticalAperture == b.verticalAperture && a.nearClip == b.nearClip && a.farClip == b.farClip;
@@ -47,6 +56,7 @@ void ViewerModel::open(const std::filesystem::path& file) {
     const BoundingSphere bounds = sceneBounds(document.scene);
     if (document.scene.renderSettings) scene::applyRenderSettings(*document.scene.renderSettings, delegate_);
 
+    referenceSession_.reset();
     session_.reset();  // one index per delegate at a time: the old one goes first
     file_ = file;
     bounds_ = bounds;
@@ -57,6 +67,8 @@ void ViewerModel::open(const std::filesystem::path& file) {
     document_ = std::move(document);
     home_ = initialCamera();
     camera = home_;
+    usedCamera_.reset();
+    viewport_.camera = ViewCameraPath;
     scene::Scene scene = document_->scene;
     scene.cameras[ViewCameraPath] = {cameraDesc(camera, bounds_), {}};
     edited_.emplace(scene);
@@ -68,6 +80,26 @@ void ViewerModel::open(const std::filesystem::path& file) {
     playing = false;
     session_ = std::make_unique<RenderSession>(delegate_, std::move(scene), viewport_);
     submitted_ = viewport_;
+    startReference();
+}
+
+void ViewerModel::showReference(hd::RenderDelegate* reference) {
+    if (reference) {
+        const auto settings = reference->renderSettingDescriptors();
+        if (std::none_of(settings.begin(), settings.end(), [](const auto& s) { return s.key == ReferenceSetting; }))
+            throw Error("the renderer has no '" + ReferenceSetting + "' setting to render a reference with");
+    }
+    referenceSession_.reset();
+    referenceDelegate_ = reference;
+    startReference();
+}
+
+void ViewerModel::startReference() {
+    if (!referenceDelegate_ || !session_) return;
+    for (const hd::RenderSettingDescriptor& setting : delegate_.renderSettingDescriptors())
+        referenceDelegate_->setRenderSetting(setting.key, renderSetting(setting.key));
+    referenceDelegate_->setRenderSetting(ReferenceSetting, true);
+    referenceSession_ = std::make_unique<RenderSession>(*referenceDelegate_, edited_->renderedScene(), submitted_);
 }
 
 void ViewerModel::setTime(double timeCode) {
@@ -275,7 +307,7 @@ std::string ViewerModel::title() const {
 
 void ViewerModel::saveScene(const std::filesystem::path& file) {
     if (!isOpen()) throw Error("no scene is open");
-    SceneExport out{scene(), edited_->disabledLights(), {}, ViewCameraPath, viewport_.width, viewport_.height,
+    SceneExport out{scene(), edited_->disabledLights(), {}, viewport_.camera, viewport_.width, viewport_.height,
                     changedSettings()};
     out.scene.cameras.at(ViewCameraPath).desc = cameraDesc(camera, bounds_);
     if (!document_->assetOnly) {
@@ -298,9 +330,47 @@ void ViewerModel::moveLight(const hd::SdfPath& path, const Imath::V3d& position)
     setLight(path, movedLight(light(path), position));
 }
 
-void ViewerModel::frameAll() { frame(camera, bounds_, aspect()); }
+std::vector<hd::SdfPath> ViewerModel::sceneCameras() const {
+    std::vector<hd::SdfPath> cameras;
+    for (const auto& entry : scene().cameras)
+        if (entry.first != ViewCameraPath) cameras.push_back(entry.first);
+    return cameras;
+}
 
-void ViewerModel::resetCamera() { camera = home_; }
+void ViewerModel::useCamera(const hd::SdfPath& path) {
+    const std::vector<hd::SdfPath> cameras = sceneCameras();
+    if (std::find(cameras.begin(), cameras.end(), path) == cameras.end()) {
+        std::string known;
+        for (const hd::SdfPath& camera : cameras) known += (known.empty() ? "<" : ", <") + camera + ">";
+        throw Error("no camera <" + path + "> in the scene (cameras: " + (known.empty() ? "none" : known) + ")");
+    }
+    usedCamera_ = path;
+    viewport_.camera = path;
+}
+
+OrbitCamera& ViewerModel::useFreeCamera() {
+    camera = viewedCamera();
+    usedCamera_.reset();
+    viewport_.camera = ViewCameraPath;
+    return camera;
+}
+
+OrbitCamera ViewerModel::viewedCamera() const {
+    if (!usedCamera_) return camera;
+    OrbitCamera viewed = orbitFromCamera(scene().cameras.at(*usedCamera_).desc, bounds_);
+    viewed.nearClip = camera.nearClip;
+    viewed.farClip = camera.farClip;
+    return viewed;
+}
+
+void ViewerModel::frameAll() { frame(useFreeCamera(), bounds_, aspect()); }
+
+void ViewerModel::frameSelection() { frame(useFreeCamera(), meshBounds(scene(), selectedMesh_), aspect()); }
+
+void ViewerModel::resetCamera() {
+    useFreeCamera();
+    camera = home_;
+}
 
 void ViewerModel::setViewport(int width, int height) {
     viewport_.width = std::max(width, 1);
@@ -332,15 +402,19 @@ int ViewerModel::update() {
     if (!edited_->changed() && viewport_ == submitted_ && pendingSettings_.empty()) return 0;
     if (!session_->firstPassDone()) return 0;  // the edits wait, merged, for the next frame
     submitted_ = viewport_;
-    return session_->submit(edited_->renderedScene(), edited_->takeChanges(), viewport_,
-                            std::exchange(pendingSettings_, {}));
+    const scene::Scene scene = edited_->renderedScene();
+    const DirtyPrims changes = edited_->takeChanges();
+    const RenderSettingChanges settings = std::exchange(pendingSettings_, {});
+    if (referenceSession_) referenceSession_->submit(scene, changes, viewport_, asReference(settings));
+    return session_->submit(scene, changes, viewport_, settings);
 }
 
 // A camera moved since the last update() is not in the picture yet, however converged the
 // picture is.
 bool ViewerModel::settled() const {
     if (!session_ || !sameCamera(cameraDesc(camera, bounds_), scene().cameras.at(ViewCameraPath).desc)) return false;
-    return !edited_->changed() && viewport_ == submitted_ && pendingSettings_.empty() && session_->settled();
+    return !edited_->changed() && viewport_ == submitted_ && pendingSettings_.empty() && session_->settled() &&
+           (!referenceSession_ || referenceSession_->settled());
 }
 
 }  // namespace opal::view

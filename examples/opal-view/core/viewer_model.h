@@ -84,7 +84,8 @@ public:
     // Scene time, in the layer's time codes. setTime reads the file's time-varying lights
     // and mesh transforms at `timeCode` (scene_reader.h) and gives flickering lights its
     // seconds; not an edit (nothing to undo or save). Throws opal::Error: a time that is
-    // not finite, the file's errors at that time. The free camera is not animated.
+    // not finite, the file's errors at that time. The free camera is not animated; a used
+    // scene camera is.
     void setTime(double timeCode);
     double timeCode() const { return timeCode_; }
     // Whether time changes the picture: time samples, or a flickering light.
@@ -94,8 +95,24 @@ public:
     bool playing = false;
     void advance(double seconds);
 
+    // The free camera, which the viewport looks through unless a scene camera is used.
     OrbitCamera camera;
+    // The scene's own cameras (not the viewer's), and the one looked through (none: the
+    // free camera). A scene camera follows scene time when its transform is animated.
+    std::vector<hd::SdfPath> sceneCameras() const;
+    const std::optional<hd::SdfPath>& usedCamera() const { return usedCamera_; }
+    // Throws opal::Error naming the scene's cameras for a path that is not one of them.
+    void useCamera(const hd::SdfPath& path);
+    // Back to the free camera, which starts where the scene camera looked from (as a
+    // tumble or a dolly does in usdview); the free camera, for moving it.
+    OrbitCamera& useFreeCamera();
+    // What the viewport looks through as a free camera (roll dropped): for gestures,
+    // gizmos and light drags.
+    OrbitCamera viewedCamera() const;
+    // Each goes to the free camera: everything framed, the selected mesh framed, the
+    // camera the document opened with.
     void frameAll();
+    void frameSelection();
     void resetCamera();
     void setViewport(int width, int height);
     // The AOVs the renderer writes (empty: every one); the others keep what they last held.
@@ -116,13 +133,22 @@ public:
     // The value the delegate has, or the one waiting to be set.
     hd::Value renderSetting(const hd::Token& key) const;
     RenderSession& session() const { return *session_; }
-    // Edits submitted and the session settled (converged on the latest scene).
+    // The A/B wipe's other side: the same scene, camera and settings rendered on
+    // `reference` (a second delegate of the plugin, which must outlive the model or the
+    // next call) with opal:reference on, in a session of its own that every edit also
+    // goes to; null stops it. Throws opal::Error when the delegate has no opal:reference.
+    void showReference(hd::RenderDelegate* reference);
+    RenderSession* referenceSession() const { return referenceSession_.get(); }
+    // Edits submitted and the session settled (converged on the latest scene), the
+    // reference's too while it is shown.
     bool settled() const;
 
 private:
     OrbitCamera initialCamera() const;
     hd::SdfPath addSceneLight(std::string name, scene::SceneLight light, const std::optional<hd::SdfPath>& path);
     RenderSettingChanges changedSettings() const;
+    // A session on the reference delegate with the delegate's settings, opal:reference on.
+    void startReference();
     // Before a material or light edit: the state it changes goes on the undo stack.
     void recordUndo();
     void restore(const EditState& state);
@@ -136,6 +162,7 @@ private:
     hd::SdfPath selectedMesh_;
     Viewport viewport_, submitted_;
     OrbitCamera home_;
+    std::optional<hd::SdfPath> usedCamera_;
     std::vector<std::string> loadWarnings_;
     UndoStack<EditState> undo_;
     bool merging_ = false, gestureOpen_ = false;
@@ -143,6 +170,8 @@ private:
     double timeCode_ = 0.0;
     std::filesystem::path timeSource_;  // the file opened: what time re-reads (a save writes no samples)
     RenderSettingChanges pendingSettings_;  // for the next submission
+    hd::RenderDelegate* referenceDelegate_ = nullptr;
+    std::unique_ptr<RenderSession> referenceSession_;
     std::unique_ptr<RenderSession> session_;  // last: goes first
 };
 
