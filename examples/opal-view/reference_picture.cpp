@@ -42,7 +42,7 @@ bool ReferencePicture::settled(const RenderSession& session, const DisplaySettin
     return session.settled() && shown_ == tag;
 }
 
-void ReferencePicture::draw(int splitX, int width, int height) const {
+void ReferencePicture::draw(int splitX, int width, int height) {
     if (texture_.empty() || splitX >= width) return;
     glEnable(GL_SCISSOR_TEST);
     glScissor(std::max(splitX, 0), 0, width - std::max(splitX, 0), height);

@@ -24,7 +24,7 @@ public:
     // The picture shown is the session's final one with these settings.
     bool settled(const RenderSession& session, const DisplaySettings& settings) const;
     // Right of column `splitX` of the width x height framebuffer (the GL viewport).
-    void draw(int splitX, int width, int height) const;
+    void draw(int splitX, int width, int height);
     // Waits for the conversion under way: before the session goes.
     void drain();
     // The config pictures are converted with from now on.
