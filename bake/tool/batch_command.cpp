@@ -5,6 +5,7 @@
 #include "schema/asset/bake_id.h"
 #include "schema/asset/xxhash64.h"
 #include "schema/error.h"
+#include "schema/usd/atomic_file.h"
 
 #include <nlohmann/json.hpp>
 
@@ -139,7 +140,13 @@ Pending prepare(const BatchEntry& e, std::uint64_t tool) {
 // The asset's figures once it is baked, skipped or failed for good.
 void finish(const BatchEntry& e, Pending& p) {
     Outcome& o = p.outcome;
-    if (o.status == Status::Baked) std::ofstream(withSuffix(e.output, ".batch")) << formatBakeId(p.key) << '\n';
+    // The key that lets the next batch skip this asset, written atomically; without it the
+    // asset is only baked again, so a failure to write it is a warning.
+    if (o.status == Status::Baked) try {
+            writeFileAtomically(withSuffix(e.output, ".batch"), formatBakeId(p.key) + "\n");
+        } catch (const Error& error) {
+            std::cerr << "opal-bake batch: warning: " << error.what() << " (the asset will be baked again next time)\n";
+        }
     o.seconds = secondsSince(p.start);
     std::error_code error;
     if (o.status != Status::Failed) o.sidecarBytes = std::filesystem::file_size(sidecarOf(e.output), error);
@@ -250,9 +257,7 @@ void writeJson(const std::filesystem::path& file, const std::vector<Outcome>& ou
         failed += o.status == Status::Failed;
     }
     j["failed"] = failed;
-    const std::filesystem::path temporary = withSuffix(file, ".tmp");
-    std::ofstream(temporary) << j.dump(2) << '\n';
-    std::filesystem::rename(temporary, file);
+    writeFileAtomically(file, j.dump(2) + "\n");
 }
 
 }  // namespace

@@ -153,6 +153,7 @@ void RelightEngine::formRadiance(bool reweigh) {
         weighProducts(reweigh, r.begin(), r.end());
     });
     cdf97InverseCharts(std::span<float>(radiance_), asset_->layout, 3);
+    irradianceNoise_ = {};  // E is re-formed (and zeroed) only when eta or the lights changed
     if (reweigh) {
         irradiance_ = moments_.combine(fresnel_);
         irradianceNoise_ = zeroNegatives(irradiance_);

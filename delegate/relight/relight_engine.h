@@ -59,9 +59,10 @@ public:
     // Bytes the engine holds beyond the asset: the compact transfer, products, radiance.
     std::size_t memoryBytes() const;
 
-    // What the last L and E lost to L >= 0 and E >= 0: the values (sample x channel) the
-    // compression's error had taken below zero, and the lowest of them as a fraction of the
-    // highest (<= 0; 0 when none). Hosts see them in the render stats.
+    // What the last setIrradiance or setMaterial zeroed (L >= 0, E >= 0): the values
+    // (sample x channel) the compression's error had taken below zero, and the lowest of
+    // them as a fraction of the highest (<= 0; 0 when none; E only when it was re-formed:
+    // a new irradiance or eta). Hosts see them in the render stats.
     struct NegativeNoise {
         std::uint64_t values = 0;
         double deepest = 0.0;

@@ -149,12 +149,16 @@ bool shapeSliders(hd::LightDesc& light) {
 bool flickerSliders(hd::LightDesc& light) {
     if (light.kind != hd::LightKind::ShadowField) return false;
     float amplitude = float(light.flicker.amplitude), frequency = float(light.flicker.frequency);
-    int seed = int(light.flicker.seed & 0x7fffffff);
+    // The seed as a 32-bit unsigned widget: the scene reader's whole range, kept as it is
+    // when only the amplitude or the frequency moves.
+    std::uint32_t seed = std::uint32_t(std::min<std::uint64_t>(light.flicker.seed, 0xffffffffu));
     bool changed = ImGui::SliderFloat("flicker amplitude", &amplitude, 0.0f, 1.0f, "%.3f", ImGuiSliderFlags_AlwaysClamp);
     changed |= ImGui::SliderFloat("flicker frequency", &frequency, 0.0f, 1000.0f, "%.3g Hz",
                                   ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
-    changed |= ImGui::InputInt("flicker seed", &seed);
-    if (changed) setFlicker(light, amplitude, frequency, std::max(seed, 0));
+    const bool seedChanged = ImGui::InputScalar("flicker seed", ImGuiDataType_U32, &seed);
+    if (changed || seedChanged)
+        setFlicker(light, amplitude, frequency, seedChanged ? double(seed) : double(light.flicker.seed));
+    changed |= seedChanged;
     return changed;
 }
 

@@ -31,7 +31,7 @@ std::string ReferencePicture::refresh(const RenderSession& session, const Displa
     tag.settled = settled;
     if (tag == requested_ || converter_.busy()) return error;
     PictureRequest request{&session.buffer(settings.aov), settings.aov, display.display(), display.view(),
-                           settings.grade, tag, !settled};
+                           settings.grade, tag, settled ? 1 : 2};
     if (converter_.request(std::move(request))) requested_ = tag;
     return error;
 }

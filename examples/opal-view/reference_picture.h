@@ -18,7 +18,7 @@ public:
     explicit ReferencePicture(const ColorConfig& config) : converter_(config) {}
 
     // Asks for the session's newest picture when it changed and the converter is free
-    // (a quarter of the pixels while it still changes), and uploads what came back.
+    // (one pixel per 2 x 2 block while it still changes), and uploads what came back.
     // Returns the conversion's error, or "".
     std::string refresh(const RenderSession& session, const DisplayPicture& display, const DisplaySettings& settings);
     // The picture shown is the session's final one with these settings.

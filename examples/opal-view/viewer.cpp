@@ -113,9 +113,11 @@ void Viewer::open(const std::filesystem::path& file) {
     if (config.file() != display_.config().file()) {
         display_ = DisplayPicture(config);
         converter_.setConfig(config);
-        if (reference_) reference_->reset(config);
         ++settings_.version;
     }
+    // Whatever the config: the new scene's first reference picture may carry the same tag
+    // as the old scene's last one.
+    if (reference_) reference_->reset(config);
     for (const std::string& warning : model_.takeLoadWarnings()) std::cerr << "opal-view: warning: " << warning << '\n';
     updateTitle();
     requested_ = shown_ = {};
