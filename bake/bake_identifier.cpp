@@ -94,7 +94,7 @@ std::string compressionIdentity(const BakeOptions& options) {
       << "keep " << exact(options.transfer.keepFraction) << ' ' << options.transfer.minPerRow << '\n'
       << "energy " << exact(options.transfer.energyFraction) << '\n'
       << "environment " << options.visibility.cubeFaceSize << ' ' << options.visibility.terms << ' '
-      << options.visibility.fresnelTerms << ' ' << std::uint32_t(options.visibility.fresnelBasis) << '\n'
+      << exact(options.visibility.error) << ' ' << options.visibility.fresnelTerms << ' ' << std::uint32_t(options.visibility.fresnelBasis) << '\n'
       << "seed " << options.seed << '\n';
     return s.str();
 }

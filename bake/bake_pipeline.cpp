@@ -211,6 +211,7 @@ TranslucentAsset prepareBake(const BakeOptions& options, ProgressSink* progress,
     asset.bake.level = std::uint32_t(subdivision.level);
     asset.bake.seed = options.seed;
     asset.bake.envTerms = options.visibility.terms;
+    asset.bake.envError = options.visibility.error;
     return asset;
 }
 

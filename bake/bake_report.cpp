@@ -27,6 +27,7 @@ nlohmann::ordered_json optionsJson(const BakeOptions& o) {
             {"energy", o.transfer.energyFraction},
             {"env_res", o.visibility.cubeFaceSize},
             {"env_terms", o.visibility.terms},
+            {"env_error", o.visibility.error},
             {"seed", o.seed}};
 }
 

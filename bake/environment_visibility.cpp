@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -19,33 +20,87 @@ namespace opal {
 
 namespace {
 
+constexpr double kPi = std::numbers::pi;
+
+constexpr int kRaysPerAxis = 2;  // per texel: 2 x 2 rays
+constexpr int kRaysPerTexel = kRaysPerAxis * kRaysPerAxis;
+
+// Per texel: its centre, and its rays' directions with their shares of its solid angle
+// (rays[t * kRaysPerTexel + r]).
 struct CubeDirections {
-    std::vector<Imath::V3f> direction;
-    std::vector<float> solidAngle;
+    std::uint32_t faceSize = 0;
+    std::vector<Imath::V3f> centre;
+    std::vector<Imath::V3f> ray;
+    std::vector<float> share;
 };
 
 CubeDirections cubeDirections(const CubeMapLayout& cube) {
     CubeDirections d;
+    const std::uint32_t size = d.faceSize = cube.faceSize();
     for (std::uint32_t t = 0; t < cube.texels(); ++t) {
-        d.direction.push_back(cube.direction(t));
-        d.solidAngle.push_back(float(cube.solidAngle(t)));
+        d.centre.push_back(cube.direction(t));
+        const CubeMapTexel texel = cube.texel(t);
+        double weights[kRaysPerTexel], total = 0.0;
+        for (int r = 0; r < kRaysPerTexel; ++r) {
+            const double u = 2.0 * (texel.u + (r % kRaysPerAxis + 0.5) / kRaysPerAxis) / size - 1.0;
+            const double v = 2.0 * (texel.v + (r / kRaysPerAxis + 0.5) / kRaysPerAxis) / size - 1.0;
+            const double q = 1.0 + u * u + v * v;
+            total += weights[r] = 1.0 / (q * std::sqrt(q));  // solid angle per unit face area
+            d.ray.push_back(CubeMapLayout::faceDirection(texel.face, float(u), float(v)));
+        }
+        for (int r = 0; r < kRaysPerTexel; ++r) d.share.push_back(float(weights[r] / total * cube.solidAngle(t)));
     }
     return d;
 }
 
-// The transport vectors of one sample, m after m: vectors[m * texels + t].
-void transportVectors(const SurfaceSample& s, const RayScene& scene, const CubeDirections& cube,
-                      std::uint32_t terms, FresnelBasis basis, float offset, std::vector<float>& vectors) {
-    const std::size_t texels = cube.direction.size();
-    std::fill(vectors.begin(), vectors.end(), 0.0f);
+// One sample's rays above its horizon, the ray index of each, and Embree's answers.
+struct RayScratch {
+    std::vector<Ray> rays;
+    std::vector<std::uint32_t> index;
+    std::vector<std::uint8_t> blocked;
+    std::vector<float> vectors;  // M x texels
+};
+
+// The occluded residual vectors of one sample, m after m: vectors[m * texels + t] = the sum,
+// over the texel's rays above the sample's horizon that hit the mesh, of mu P_m(mu) times
+// the ray's share of the texel's solid angle.
+void occludedVectors(const SurfaceSample& s, const RayScene& scene, const CubeDirections& cube, std::uint32_t terms,
+                     FresnelBasis basis, float offset, RayScratch& scratch) {
+    const std::size_t texels = cube.centre.size();
+    const float horizon = -2.0f / float(cube.faceSize);
+    std::fill(scratch.vectors.begin(), scratch.vectors.end(), 0.0f);
+    scratch.rays.clear();
+    scratch.index.clear();
     const Imath::V3f origin = s.position + s.normal * offset;
-    for (std::size_t t = 0; t < texels; ++t) {
-        const float mu = s.normal.dot(cube.direction[t]);
-        if (mu <= 0.0f) continue;
-        if (scene.occluded(Ray(origin, cube.direction[t], 0.0f, std::numeric_limits<float>::infinity()))) continue;
-        for (std::uint32_t m = 0; m < terms; ++m)
-            vectors[m * texels + t] = mu * float(fresnelBasisFunction(basis, int(m), mu)) * cube.solidAngle[t];
+    for (std::uint32_t t = 0; t < texels; ++t) {
+        // A texel whose centre lies more than 2 / size below the horizon (more than the
+        // texel's angular half-diagonal) lies wholly below it.
+        if (s.normal.dot(cube.centre[t]) < horizon) continue;
+        for (std::uint32_t r = t * kRaysPerTexel; r < (t + 1) * kRaysPerTexel; ++r)
+            if (s.normal.dot(cube.ray[r]) > 0.0f) {
+                scratch.rays.emplace_back(origin, cube.ray[r], 0.0f, std::numeric_limits<float>::infinity());
+                scratch.index.push_back(r);
+            }
     }
+    scratch.blocked.resize(scratch.rays.size());
+    scene.occludedCoherent(scratch.rays, scratch.blocked);  // neighbouring rays from one origin
+    for (std::size_t k = 0; k < scratch.rays.size(); ++k) {
+        if (!scratch.blocked[k]) continue;
+        const std::uint32_t r = scratch.index[k], t = r / kRaysPerTexel;
+        const float mu = s.normal.dot(cube.ray[r]);
+        for (std::uint32_t m = 0; m < terms; ++m)
+            scratch.vectors[m * texels + t] += float(mu * fresnelBasisFunction(basis, int(m), mu)) * cube.share[r];
+    }
+}
+
+// The kept positions of one sample's m = 0 vector: the fewest largest whose dropped energy is
+// at most `budget`, at most `cap` of them.
+SparseVector keepPositions(std::span<const float> coefficients, double budget, std::uint32_t cap) {
+    double total = 0.0;
+    for (float c : coefficients) total += double(c) * c;
+    if (total <= budget) return {};
+    SparseVector kept = keepEnergyFraction(coefficients, 1.0 - budget / total);
+    return kept.size() > cap ? keepLargest(coefficients, cap) : kept;
 }
 
 }  // namespace
@@ -61,6 +116,11 @@ EnvironmentTransfer buildEnvironmentTransfer(const RenderMesh& mesh, std::span<c
     const std::size_t texels = cube.texels();
     const std::uint32_t kept = std::min<std::uint32_t>(settings.terms, std::uint32_t(texels));
     if (kept == 0) throw Error("environment visibility: --env-terms must be at least 1");
+    if (!(settings.error >= 0.0 && settings.error <= 1.0))
+        throw Error("environment visibility: --env-error must be in [0, 1], got " + std::to_string(settings.error));
+    // The energy of an open hemisphere's m = 0 vector: integral of mu^2 dOmega = 2 pi / 3,
+    // times one texel's mean solid angle.
+    const double budget = settings.error * settings.error * (2.0 * kPi / 3.0) * (4.0 * kPi / double(texels));
     const CubeDirections directions = cubeDirections(cube);
     RayScene scene(RayScene::BuildQuality::High);
     scene.addMesh(mesh, Imath::M44d());
@@ -72,20 +132,22 @@ EnvironmentTransfer buildEnvironmentTransfer(const RenderMesh& mesh, std::span<c
     out.cubeFaceSize = settings.cubeFaceSize;
     out.fresnelTerms = M;
     out.fresnelBasis = settings.fresnelBasis;
-    // Per sample, the kept positions (fewer than `kept` when the vector has fewer nonzero
-    // coefficients: a sample facing a wall) and their values for every m.
+    out.kind = EnvironmentVectorKind::Occluded;
+    // Per sample, the kept positions (none for a sample that sees its whole hemisphere) and
+    // their values for every m.
     std::vector<SparseVector> top(samples.size());
     std::vector<std::vector<float>> values(samples.size());
     StageScope stage(progress, "environment visibility", samples.size());
-    tbb::enumerable_thread_specific<std::vector<float>> scratch([&] { return std::vector<float>(M * texels); });
+    tbb::enumerable_thread_specific<RayScratch> scratch([&] { return RayScratch{{}, {}, {}, std::vector<float>(M * texels)}; });
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, samples.size(), 16), [&](const auto& range) {
         cancel.throwIfRequested();
-        std::vector<float>& vectors = scratch.local();
+        RayScratch& own = scratch.local();
+        std::vector<float>& vectors = own.vectors;
         for (std::size_t i = range.begin(); i != range.end(); ++i) {
-            transportVectors(samples[i], scene, directions, M, settings.fresnelBasis, offset, vectors);
+            occludedVectors(samples[i], scene, directions, M, settings.fresnelBasis, offset, own);
             for (std::uint32_t m = 0; m < M; ++m)
                 haarForwardCharts(std::span<float>(vectors.data() + m * texels, texels), faces);
-            top[i] = keepLargest(std::span<const float>(vectors.data(), texels), kept);
+            top[i] = keepPositions(std::span<const float>(vectors.data(), texels), budget, kept);
             for (std::uint32_t m = 0; m < M; ++m)
                 for (std::uint32_t index : top[i].indices) values[i].push_back(vectors[m * texels + index]);
         }

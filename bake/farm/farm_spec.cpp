@@ -34,6 +34,7 @@ void writeOptions(SectionWriter& w, const BakeOptions& o) {
     w.u32(o.transfer.minPerRow);
     w.u32(o.visibility.cubeFaceSize);
     w.u32(o.visibility.terms);
+    w.f64(o.visibility.error);
     w.u32(o.visibility.fresnelTerms);
     w.u32(std::uint32_t(o.visibility.fresnelBasis));
     w.u64(o.seed);
@@ -58,6 +59,7 @@ BakeOptions readOptions(SectionReader& r) {
     o.transfer.minPerRow = r.u32("keep minimum");
     o.visibility.cubeFaceSize = r.u32("cube face size");
     o.visibility.terms = r.u32("environment terms");
+    o.visibility.error = r.f64("environment error");
     o.visibility.fresnelTerms = r.u32("Fresnel terms");
     const std::uint32_t basis = r.u32("Fresnel basis");
     if (basis > std::uint32_t(FresnelBasis::Schlick)) r.fail("Fresnel basis", "is " + std::to_string(basis));
@@ -110,6 +112,7 @@ void writeAsset(SectionWriter& w, const TranslucentAsset& a) {
     w.u32(a.bake.level);
     w.u64(a.bake.seed);
     w.u32(a.bake.envTerms);
+    w.f64(a.bake.envError);
 }
 
 TranslucentAsset readAsset(SectionReader& r) {
@@ -148,6 +151,7 @@ TranslucentAsset readAsset(SectionReader& r) {
     a.bake.level = r.u32("bake level");
     a.bake.seed = r.u64("bake seed");
     a.bake.envTerms = r.u32("environment terms");
+    a.bake.envError = r.f64("environment error");
     return a;
 }
 

@@ -106,7 +106,12 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     app.add_option("--env-res", options.visibility.cubeFaceSize, "environment cube map face size (power of two)")
         ->capture_default_str();
-    app.add_option("--env-terms", options.visibility.terms, "Haar terms kept per sample for the environment")
+    app.add_option("--env-terms", options.visibility.terms, "the most Haar terms one sample keeps for the environment")
+        ->capture_default_str();
+    app.add_option("--env-error", options.visibility.error,
+                   "environment: per sample, the dropped terms hold at most about this fraction of an open "
+                   "sample's E")
+        ->check(CLI::Range(0.0, 1.0))
         ->capture_default_str();
     app.add_option("--seed", options.seed, "random seed (same seed, same bytes)")->capture_default_str();
     app.add_option("--json", jsonPath, "write a JSON report to this file");

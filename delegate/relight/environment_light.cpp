@@ -3,7 +3,6 @@
 #include "delegate/relight/light_emission.h"
 
 #include "schema/error.h"
-#include "schema/wavelet/haar.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -143,12 +142,6 @@ std::vector<float> EnvironmentLight::cubeRadiance(const CubeMapLayout& cube, con
             for (int c = 0; c < 3; ++c) radiance[std::size_t(index) * 3 + c] = float(sum[c] / weights * scale_[c]);
         }
     });
-    return radiance;
-}
-
-std::vector<float> EnvironmentLight::haarRadiance(const CubeMapLayout& cube, const Imath::M44d& objectToWorld) const {
-    std::vector<float> radiance = cubeRadiance(cube, objectToWorld);
-    haarForwardCharts(std::span<float>(radiance), cube.charts(), 3);
     return radiance;
 }
 

@@ -93,8 +93,6 @@ public:
     // object space of a mesh placed by objectToWorld: texels x 3, area-averaged over each
     // texel (supersampled, weighted by solid angle).
     std::vector<float> cubeRadiance(const CubeMapLayout& cube, const Imath::M44d& objectToWorld) const;
-    // The same, Haar transformed per face: what the baked transport vectors are dotted with.
-    std::vector<float> haarRadiance(const CubeMapLayout& cube, const Imath::M44d& objectToWorld) const;
     const Rgb& scale() const { return scale_; }
 
 private:

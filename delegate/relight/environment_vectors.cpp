@@ -1,9 +1,11 @@
 #include "delegate/relight/environment_vectors.h"
 
+#include "delegate/relight/dome_convolution.h"
 #include "delegate/relight/float4.h"
 #include "delegate/relight/scaled_half.h"
 #include "schema/error.h"
 #include "schema/scatter/fresnel_moments.h"
+#include "schema/wavelet/haar.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -72,7 +74,8 @@ __attribute__((target("avx2,fma,f16c"))) void sampleAvx2(const Index* positions,
 }  // namespace
 
 EnvironmentVectors::EnvironmentVectors(const EnvironmentTransfer& transfer, std::size_t samples, bool useAvx2)
-    : terms_(transfer.fresnelTerms), texels_(6u * transfer.cubeFaceSize * transfer.cubeFaceSize) {
+    : terms_(transfer.fresnelTerms), kind_(transfer.kind), basis_(transfer.fresnelBasis),
+      faceSize_(transfer.cubeFaceSize), texels_(6u * transfer.cubeFaceSize * transfer.cubeFaceSize) {
 #if OPAL_ENVIRONMENT_VECTORS_AVX2
     avx2_ = useAvx2 && cpuHasAvx2FmaF16c();
 #else
@@ -144,13 +147,14 @@ EnvironmentVectors::EnvironmentVectors(const EnvironmentTransfer& transfer, std:
 // radiance: texels x 4 (RGB and a zero), so that each entry is whole-register arithmetic.
 // Even and odd entries go to separate accumulators to halve the add dependency chain.
 template <typename Index, std::uint32_t M>
-void EnvironmentVectors::addRows(const Index* positions, const float* radiance, IrradianceMoments& moments) const {
+void EnvironmentVectors::addRows(const Index* positions, const float* radiance, const float* scales,
+                                 IrradianceMoments& moments) const {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, samples(), kSamplesPerTask), [&](const auto& range) {
         for (std::size_t i = range.begin(); i != range.end(); ++i) {
 #if OPAL_ENVIRONMENT_VECTORS_AVX2
             if (avx2_) {
                 sampleAvx2<Index, M>(positions, halves_.data() + offsets_[i] * M, offsets_[i], offsets_[i + 1], radiance,
-                                     scales_.data(), moments.sample(i));
+                                     scales, moments.sample(i));
                 continue;
             }
 #endif
@@ -172,28 +176,51 @@ void EnvironmentVectors::addRows(const Index* positions, const float* radiance, 
             }
             float* out = moments.sample(i);  // [m * 3 + c]
             for (std::uint32_t m = 0; m < M; ++m) {
-                const Float4 sum = (even[m] + odd[m]) * scales_[m];
+                const Float4 sum = (even[m] + odd[m]) * scales[m];
                 for (int c = 0; c < 3; ++c) out[3 * m + c] += sum[c];
             }
         }
     });
 }
 
-void EnvironmentVectors::addIrradiance(std::span<const float> haarRadiance, IrradianceMoments& moments) const {
+void EnvironmentVectors::addDome(std::vector<float> radiance, std::span<const SurfaceSample> samples,
+                                 IrradianceMoments& moments) const {
+    if (samples.size() != this->samples())
+        throw Error("dome light: the environment transfer has " + count(this->samples()) + " samples, the asset " +
+                    count(samples.size()));
+    const CubeMapLayout cube(faceSize_);
+    if (kind_ == EnvironmentVectorKind::Occluded) {
+        if (moments.terms != terms_ || moments.samples != samples.size())
+            throw Error("dome light: the environment transfer has " + count(samples.size()) + " samples x " +
+                        count(terms_) + " Fresnel terms, the irradiance " + count(moments.samples) + " x " +
+                        count(moments.terms));
+        const DomeConvolution open(cube, radiance, terms_, basis_);
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, samples.size(), kSamplesPerTask), [&](const auto& range) {
+            for (std::size_t i = range.begin(); i != range.end(); ++i) open.add(samples[i].normal, moments.sample(i));
+        });
+    }
+    haarForwardCharts(std::span<float>(radiance), cube.charts(), 3);
+    addIrradiance(radiance, moments, kind_ == EnvironmentVectorKind::Occluded ? -1.0f : 1.0f);
+}
+
+void EnvironmentVectors::addIrradiance(std::span<const float> haarRadiance, IrradianceMoments& moments,
+                                       float weight) const {
     if (moments.terms != terms_ || moments.samples != samples())
         throw Error("dome light: the environment transfer has " + count(samples()) + " samples x " + count(terms_) +
                     " Fresnel terms, the irradiance " + count(moments.samples) + " x " + count(moments.terms));
     if (haarRadiance.size() != std::size_t(texels_) * 3)
         throw Error("dome light: " + count(haarRadiance.size()) + " radiance values for " + count(texels_) +
                     " RGB texels");
+    std::vector<float> scales(scales_);
+    for (float& s : scales) s *= weight;
     std::vector<float> padded(std::size_t(texels_) * 4, 0.0f);
     for (std::size_t t = 0; t < texels_; ++t) std::copy_n(haarRadiance.data() + 3 * t, 3, padded.data() + 4 * t);
     const auto withTerms = [&](auto index) {
         using Index = std::remove_cv_t<std::remove_pointer_t<decltype(index)>>;
         switch (terms_) {
-            case 1: addRows<Index, 1>(index, padded.data(), moments); break;
-            case 2: addRows<Index, 2>(index, padded.data(), moments); break;
-            default: addRows<Index, 3>(index, padded.data(), moments); break;
+            case 1: addRows<Index, 1>(index, padded.data(), scales.data(), moments); break;
+            case 2: addRows<Index, 2>(index, padded.data(), scales.data(), moments); break;
+            default: addRows<Index, 3>(index, padded.data(), scales.data(), moments); break;
         }
     };
     if (texels_ <= 65536)

@@ -1,6 +1,7 @@
-// The asset's baked environment transport vectors T_{i,m} (docs/ARCHITECTURE.md#dome-light), laid
-// out for the one operation a dome edit waits for: E_m(x_i) += <T_{i,m}, L> for every sample i and
-// moment m, RGB.
+// The asset's baked environment vectors (docs/ARCHITECTURE.md#dome-light), laid out for the one
+// operation a dome edit waits for: E_m(x_i) += <T_{i,m}, L> for every sample i and moment m, RGB,
+// with T the visible transport, or E_m(x_i) += U_m(n_i) - <O_{i,m}, L> with O the occluded
+// residual (EnvironmentTransfer::kind) and U the dome's unoccluded integral (dome_convolution.h).
 //
 // The sidecar stores one sparse row per (sample, m); the bake keeps the same Haar
 // positions for every m of a sample (bake/environment_visibility.h). Here each sample has
@@ -37,9 +38,17 @@ public:
     std::uint32_t texels() const { return texels_; }
     std::size_t samples() const { return offsets_.size() - 1; }
 
-    // E_m(x_i) += <T_{i,m}, L>, haarRadiance texels x 3 (EnvironmentLight::haarRadiance).
-    // Throws opal::Error when the moments or the radiance do not match.
-    void addIrradiance(std::span<const float> haarRadiance, IrradianceMoments& moments) const;
+    EnvironmentVectorKind kind() const { return kind_; }
+
+    // The dome's E_m at every sample, added to `moments`: radiance is the dome on the cube
+    // map in object space, texels x 3 (EnvironmentLight::cubeRadiance), and samples the
+    // asset's (their object-space normals). Throws opal::Error when the moments, the
+    // radiance or the samples do not match.
+    void addDome(std::vector<float> radiance, std::span<const SurfaceSample> samples, IrradianceMoments& moments) const;
+    // E_m(x_i) += weight <v_{i,m}, L> for the stored vectors v, haarRadiance texels x 3 (the
+    // cube radiance Haar transformed per face). Throws opal::Error when the moments or the
+    // radiance do not match.
+    void addIrradiance(std::span<const float> haarRadiance, IrradianceMoments& moments, float weight = 1.0f) const;
 
     // Bytes of the compact vectors.
     std::size_t memoryBytes() const {
@@ -50,9 +59,12 @@ public:
 
 private:
     template <typename Index, std::uint32_t M>
-    void addRows(const Index* positions, const float* radiance, IrradianceMoments& moments) const;
+    void addRows(const Index* positions, const float* radiance, const float* scales, IrradianceMoments& moments) const;
 
     std::uint32_t terms_ = 0;
+    EnvironmentVectorKind kind_ = EnvironmentVectorKind::Visible;
+    FresnelBasis basis_ = FresnelBasis::Legendre;
+    std::uint32_t faceSize_ = 0;
     std::uint32_t texels_ = 0;
     bool avx2_ = false;
     std::vector<std::uint64_t> offsets_;      // per sample, into the position lists

@@ -59,7 +59,7 @@ void MeshIrradiance::compute(Contribution& c, const RayScene* scene) {
         throw Error("irradiance: asset '" + asset_->name + "' has no environment transfer for a dome light");
     if (!environment_) environment_ = std::make_unique<const EnvironmentVectors>(asset_->environment, asset_->samples.size());
     const CubeMapLayout cube(asset_->environment.cubeFaceSize);
-    environment_->addIrradiance(dome->haarRadiance(cube, objectToWorld_), c.moments);
+    environment_->addDome(dome->cubeRadiance(cube, objectToWorld_), asset_->samples, c.moments);
 }
 
 void MeshIrradiance::resum() {

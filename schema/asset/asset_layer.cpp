@@ -117,6 +117,7 @@ void checkSameBake(const std::filesystem::path& usdaPath, const std::filesystem:
 
 usda::Dictionary bakeDictionary(const BakeSettings& bake) {
     usda::Dictionary d;
+    d.set("envError", Value::make<types::Double>(bake.envError));
     d.set("envTerms", Value::make<types::UInt>(bake.envTerms));
     d.set("level", Value::make<types::UInt>(bake.level));
     d.set("scheme", Value::token(bake.scheme));
@@ -133,6 +134,7 @@ BakeSettings readBakeSettings(const usda::Prim& prim) {
     const usda::Value* dict = custom ? custom->find("opalBake") : nullptr;
     if (!dict) return bake;
     const usda::Dictionary& d = dict->get<types::Dictionary>("customData 'opalBake'");
+    if (const Value* v = d.find("envError")) bake.envError = v->get<types::Double>("opalBake 'envError'");
     if (const Value* v = d.find("envTerms")) bake.envTerms = v->get<types::UInt>("opalBake 'envTerms'");
     if (const Value* v = d.find("level")) bake.level = v->get<types::UInt>("opalBake 'level'");
     if (const Value* v = d.find("scheme")) bake.scheme = v->get<types::Token>("opalBake 'scheme'");

@@ -18,7 +18,8 @@ constexpr double kXyzD65ToRec709[3][3] = {{3.2404542, -1.5371385, -0.4985314},
 
 // Irradiance under the uniform dome of radiance 1 at each sample, from its m = 0
 // environment vector: the map of 1 has, per face, only the Haar DC term n (orthonormal Haar,
-// schema/wavelet/haar.h), so E = n sum_faces T[face DC].
+// schema/wavelet/haar.h), so E = n sum_faces T[face DC], or pi - n sum_faces O[face DC]
+// for occluded residuals (pi: the unoccluded integral of mu).
 std::vector<double> domeIrradiance(const TranslucentAsset& asset) {
     const EnvironmentTransfer& env = asset.environment;
     std::vector<double> e(asset.samples.size(), std::numbers::pi);
@@ -29,7 +30,7 @@ std::vector<double> domeIrradiance(const TranslucentAsset& asset) {
         double sum = 0.0;
         for (std::uint32_t k = env.offsets[row]; k < env.offsets[row + 1]; ++k)
             if (env.indices[k] % faceTexels == 0) sum += env.values[k];
-        e[i] = double(n) * sum;
+        e[i] = env.kind == EnvironmentVectorKind::Occluded ? std::numbers::pi - double(n) * sum : double(n) * sum;
     }
     return e;
 }

@@ -18,8 +18,8 @@ namespace opal {
 
 // 2.0: transfer values on a quantization grid, environment values as half planes (1.0
 // stored both as float planes). 2.1 adds the optional BKID chunk (the bake identifier),
-// 2.2 the optional FBAS chunk, 2.3 the SELF chunk.
-inline constexpr FileKind kSidecarKind{"SCAT", {2, 3}};
+// 2.2 the optional FBAS chunk, 2.3 the SELF chunk, 2.4 the ENVK chunk.
+inline constexpr FileKind kSidecarKind{"SCAT", {2, 4}};
 
 // The chunk tags (all required in version 2.0, except BKID: optional, from 2.1).
 namespace sidecar_chunk {
@@ -36,6 +36,10 @@ inline constexpr ChunkTag kFresnelBasis{"FBAS"};
 // Written flagged required when the self term is left to run time: a reader that does not
 // know the chunk would render without it, so it must refuse the file instead.
 inline constexpr ChunkTag kSelfTerm{"SELF"};
+// 2.4: what the environment vectors hold, u32 (EnvironmentVectorKind); absent: the visible
+// transport. Written flagged required when they hold the occluded residual: a reader that
+// does not know the chunk would light with the residual as if it were the transport.
+inline constexpr ChunkTag kEnvironmentKind{"ENVK"};
 }  // namespace sidecar_chunk
 
 struct SidecarWriteOptions {

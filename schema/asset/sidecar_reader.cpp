@@ -7,13 +7,17 @@
 #include "schema/asset/sidecar_checks.h"
 #include "schema/asset/transfer_value_grid.h"
 
+#include <initializer_list>
+#include <string>
+#include <string_view>
+
 namespace opal {
 namespace {
 
 using namespace sidecar_chunk;
 
 constexpr ChunkTag kKnownChunks[] = {kHeader, kLayout, kSamples, kVertexWeights, kTransfer, kEnvironment, kBakeId,
-                                     kFresnelBasis, kSelfTerm};
+                                     kFresnelBasis, kSelfTerm, kEnvironmentKind};
 
 struct Payload {
     ChartLayout layout;
@@ -150,20 +154,31 @@ EnvironmentTransfer readEnvironment(ChunkSource src, std::uint64_t samples) {
     return env;
 }
 
-FresnelBasis readFresnelBasis(ChunkSource src) {
-    const std::uint32_t basis = src.readU32();
-    if (basis != std::uint32_t(FresnelBasis::Legendre) && basis != std::uint32_t(FresnelBasis::Schlick))
-        src.fail("unknown Fresnel basis " + str(basis) + " (0 Legendre, 1 Schlick)");
+// A u32 chunk holding one of `names` (value v is names[v]); anything else is refused
+// naming the choices.
+std::uint32_t readChoice(ChunkSource src, std::string_view what, std::initializer_list<std::string_view> names) {
+    const std::uint32_t value = src.readU32();
+    if (value >= names.size()) {
+        std::string choices;
+        for (std::uint32_t v = 0; v < names.size(); ++v)
+            choices += (v ? ", " : "") + str(v) + " " + std::string(names.begin()[v]);
+        src.fail("unknown " + std::string(what) + " " + str(value) + " (" + choices + ")");
+    }
     src.finish();
-    return FresnelBasis(basis);
+    return value;
+}
+
+FresnelBasis readFresnelBasis(ChunkSource src) {
+    return FresnelBasis(readChoice(std::move(src), "Fresnel basis", {"Legendre", "Schlick"}));
 }
 
 SelfTerm readSelfTerm(ChunkSource src) {
-    const std::uint32_t self = src.readU32();
-    if (self != std::uint32_t(SelfTerm::InTransfer) && self != std::uint32_t(SelfTerm::AtRunTime))
-        src.fail("unknown self-term placement " + str(self) + " (0 in the transfer, 1 at run time)");
-    src.finish();
-    return SelfTerm(self);
+    return SelfTerm(readChoice(std::move(src), "self-term placement", {"in the transfer", "at run time"}));
+}
+
+EnvironmentVectorKind readEnvironmentKind(ChunkSource src) {
+    return EnvironmentVectorKind(
+        readChoice(std::move(src), "environment vector kind", {"visible transport", "occluded residual"}));
 }
 
 }  // namespace
@@ -182,6 +197,7 @@ SidecarHeader readSidecar(const std::filesystem::path& path, TranslucentAsset& a
     p.environment = readEnvironment(file.open(kEnvironment), samples);
     if (file.find(kFresnelBasis)) p.environment.fresnelBasis = readFresnelBasis(file.open(kFresnelBasis));
     if (file.find(kSelfTerm)) p.transfer.selfTerm = readSelfTerm(file.open(kSelfTerm));
+    if (file.find(kEnvironmentKind)) p.environment.kind = readEnvironmentKind(file.open(kEnvironmentKind));
     asset.layout = p.layout;
     asset.samples = std::move(p.samples);
     asset.vertexWeights = std::move(p.vertexWeights);

@@ -118,6 +118,9 @@ void writeSidecar(const std::filesystem::path& path, const TranslucentAsset& a,
     if (a.transfer.selfTerm != SelfTerm::InTransfer)  // required: see sidecar.h
         all.push_back({kSelfTerm, ChunkCodec::Raw, true,
                        [&](ChunkSink& s) { s.writeU32(std::uint32_t(a.transfer.selfTerm)); }});
+    if (a.environment.kind != EnvironmentVectorKind::Visible)  // required: see sidecar.h
+        all.push_back({kEnvironmentKind, ChunkCodec::Raw, true,
+                       [&](ChunkSink& s) { s.writeU32(std::uint32_t(a.environment.kind)); }});
     writeChunkedFile(path, kSidecarKind, all, {options.zstdLevel});
 }
 

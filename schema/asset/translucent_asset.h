@@ -60,21 +60,28 @@ struct CompressedTransfer {
     // 0: stored exactly. Empty means all 0.
     std::vector<double> valueSteps;
     double keepFraction = 0.01;          // step 1
-    double energyFraction = 0.99995;     // step 2
+    double energyFraction = 0.99998;     // step 2
     SelfTerm selfTerm = SelfTerm::InTransfer;
 
     double valueStep(std::size_t k) const { return k < valueSteps.size() ? valueSteps[k] : 0.0; }
 };
 
-// Environment light transfer (Ng et al. 2003): per sample, visibility x cosine over a
-// 6 x size x size cube map, Haar transformed, top terms kept. F_t(eta, .) is applied at
-// run time through `fresnelTerms` moments: vector m holds V cos(theta) P_m(cos(theta)).
+// What an environment vector holds (docs/ARCHITECTURE.md#dome-light): the visible
+// transport V cos P_m dOmega itself (sidecars before 2.4), or its occluded residual
+// (1 - V) cos P_m dOmega, which the delegate subtracts from the unoccluded integral.
+enum class EnvironmentVectorKind : std::uint32_t { Visible = 0, Occluded = 1 };
+
+// Environment light transfer (Ng et al. 2003): per sample, (occluded) visibility x cosine
+// over a 6 x size x size cube map, Haar transformed, the largest terms kept. F_t(eta, .) is
+// applied at run time through `fresnelTerms` moments: vector m holds V cos(theta)
+// P_m(cos(theta)) dOmega, or (1 - V) cos(theta) P_m(cos(theta)) dOmega (`kind`).
 struct EnvironmentTransfer {
     std::uint32_t cubeFaceSize = 32;
     std::uint32_t fresnelTerms = 1;
     // The P_m of the vectors (schema/scatter/fresnel_moments.h); Legendre for sidecars
     // without chunk FBAS (written before 2.2).
     FresnelBasis fresnelBasis = FresnelBasis::Legendre;
+    EnvironmentVectorKind kind = EnvironmentVectorKind::Visible;
     // CSR over (sample * fresnelTerms + m); empty offsets mean "not baked".
     std::vector<std::uint32_t> offsets;
     std::vector<std::uint32_t> indices;  // cube-map Haar coefficient index, ascending per row
@@ -86,7 +93,8 @@ struct BakeSettings {
     std::string scheme;            // "catmullClark" or "loop"
     std::uint32_t level = 0;       // uniform subdivision level
     std::uint64_t seed = 1;
-    std::uint32_t envTerms = 128;
+    std::uint32_t envTerms = 1024;  // the most environment terms one sample keeps
+    double envError = 0.005;        // per sample: what the dropped terms may hold (bake/environment_visibility.h)
     // The bake's identifier (bake_id.h), recorded in the layer and the sidecar; empty for
     // assets baked before Opal recorded one (and for assets made in memory).
     std::optional<std::uint64_t> identifier;

@@ -183,34 +183,51 @@ TEST(Sidecar, FresnelBasisRoundTripsAndDefaultsToLegendre) {
                    {"unknown.opal", "FBAS", "unknown Fresnel basis 7"});
 }
 
-// Where the transfer's self term lives travels in chunk SELF, flagged required when it is
-// left to run time (a reader that skipped it would render without the self term); a
-// sidecar without it (every one written before 2.3) holds it in the transfer.
-TEST(Sidecar, SelfTermPlacementRoundTripsAndDefaultsToInTheTransfer) {
+// A choice that travels in its own chunk, flagged required when it is not the default (a
+// reader that skipped it would misread the rest); a sidecar without the chunk (every one
+// written before it existed) holds the default. field: the choice inside an asset.
+template <typename Choice>
+void expectRequiredChoiceChunk(Choice& (*field)(TranslucentAsset&), ChunkTag tag, Choice fallback, Choice other,
+                               const std::string& unknownMessage) {
     TempDir dir;
     TranslucentAsset original = test::syntheticAsset();
     roundToStoredPrecision(original);
-    original.transfer.selfTerm = SelfTerm::AtRunTime;
-    writeSidecar(dir / "runtime.opal", original);
+    field(original) = other;
+    writeSidecar(dir / "other.opal", original);
     TranslucentAsset loaded;
-    readSidecar(dir / "runtime.opal", loaded);
-    EXPECT_EQ(loaded.transfer.selfTerm, SelfTerm::AtRunTime);
-    const ChunkedFileReader file(dir / "runtime.opal", kSidecarKind);
-    ASSERT_TRUE(file.find(sidecar_chunk::kSelfTerm));
-    EXPECT_TRUE(file.find(sidecar_chunk::kSelfTerm)->required);
+    readSidecar(dir / "other.opal", loaded);
+    EXPECT_EQ(field(loaded), other);
+    const ChunkedFileReader file(dir / "other.opal", kSidecarKind);
+    ASSERT_TRUE(file.find(tag));
+    EXPECT_TRUE(file.find(tag)->required);
 
-    original.transfer.selfTerm = SelfTerm::InTransfer;
-    writeSidecar(dir / "intransfer.opal", original);
+    field(original) = fallback;
+    writeSidecar(dir / "fallback.opal", original);
     TranslucentAsset old;
-    old.transfer.selfTerm = SelfTerm::AtRunTime;  // overwritten by the read
-    readSidecar(dir / "intransfer.opal", old);
-    EXPECT_EQ(old.transfer.selfTerm, SelfTerm::InTransfer);
-    EXPECT_FALSE(ChunkedFileReader(dir / "intransfer.opal", kSidecarKind).find(sidecar_chunk::kSelfTerm));
+    field(old) = other;  // overwritten by the read
+    readSidecar(dir / "fallback.opal", old);
+    EXPECT_EQ(field(old), fallback);
+    EXPECT_FALSE(ChunkedFileReader(dir / "fallback.opal", kSidecarKind).find(tag));
 
-    original.transfer.selfTerm = SelfTerm(5);
+    field(original) = Choice(5);
     writeSidecar(dir / "unknown.opal", original);
     expectContains(errorOf([&] { readSidecar(dir / "unknown.opal", loaded); }),
-                   {"unknown.opal", "SELF", "unknown self-term placement 5"});
+                   {"unknown.opal", tag.str(), unknownMessage + " 5"});
+}
+
+// Where the transfer's self term lives (chunk SELF, 2.3): in the transfer by default.
+TEST(Sidecar, SelfTermPlacementRoundTripsAndDefaultsToInTheTransfer) {
+    expectRequiredChoiceChunk<SelfTerm>([](TranslucentAsset& a) -> SelfTerm& { return a.transfer.selfTerm; },
+                                        sidecar_chunk::kSelfTerm, SelfTerm::InTransfer, SelfTerm::AtRunTime,
+                                        "unknown self-term placement");
+}
+
+// What the environment vectors hold (chunk ENVK, 2.4): the visible transport by default.
+TEST(Sidecar, EnvironmentVectorKindRoundTripsAndDefaultsToVisible) {
+    expectRequiredChoiceChunk<EnvironmentVectorKind>(
+        [](TranslucentAsset& a) -> EnvironmentVectorKind& { return a.environment.kind; },
+        sidecar_chunk::kEnvironmentKind, EnvironmentVectorKind::Visible, EnvironmentVectorKind::Occluded,
+        "unknown environment vector kind");
 }
 
 TEST(Sidecar, TwoWritesAreByteIdentical) {

@@ -66,12 +66,21 @@ TEST(EnvironmentLight, CubeTexelsSeeTheMapInTheRightDirection) {
     EXPECT_EQ(at({0.01f, 0.01f, -1}, 2), 0.0f);
 }
 
-// A slab of samples with normal +Y seeing the whole upper hemisphere.
-std::shared_ptr<TranslucentAsset> hemisphereAsset(std::uint32_t faceSize, std::uint32_t terms) {
+// A slab of samples with normal +Y seeing the whole upper hemisphere: visible transport
+// vectors, or occluded residuals, which are then empty.
+std::shared_ptr<TranslucentAsset> hemisphereAsset(std::uint32_t faceSize, std::uint32_t terms,
+                                                  EnvironmentVectorKind kind = EnvironmentVectorKind::Visible) {
     auto asset = std::make_shared<TranslucentAsset>();
     test::makeSlab(*asset, 1, 1, 1, 1.0f);
     asset->range = EditableRange::coveringPresets();
     asset->environment = test::environmentTransfer(*asset, faceSize, terms, [](std::size_t, const Imath::V3f&) { return true; });
+    if (kind == EnvironmentVectorKind::Occluded) {
+        EnvironmentTransfer& env = asset->environment;
+        env.kind = kind;
+        env.offsets.assign(env.offsets.size(), 0);
+        env.indices.clear();
+        env.values.clear();
+    }
     return asset;
 }
 
@@ -81,13 +90,9 @@ Imath::M44d rotationY(double degrees) {
     return m;
 }
 
-TEST(EnvironmentLight, LinearSkyGivesClosedFormMoments) {
-    // L(w) = a + b.w: E_0 = integral L mu dw = pi a + (2 pi / 3) b.n and
-    // E_1 = integral L mu (2 mu - 1) dw = (pi / 3)(a + b.n), for an unoccluded normal n.
-    const double a = 2.0;
-    const Imath::V3d b(0.5, 0.8, -0.3);
-    const auto map = mapOf(512, 256, [&](const Imath::V3d& d) { return Imath::V3f(float(a + b.dot(d))); });
-    const auto asset = hemisphereAsset(32, 2);
+void expectLinearSkyMoments(const std::shared_ptr<TranslucentAsset>& asset, double a, const Imath::V3d& b,
+                            const std::shared_ptr<LatLongMap>& map) {
+    const char* kindName = asset->environment.kind == EnvironmentVectorKind::Occluded ? " (occluded residuals)" : "";
     hd::LightDesc desc;
     desc.kind = hd::LightKind::Dome;
     desc.intensity = 0.5;
@@ -102,10 +107,22 @@ TEST(EnvironmentLight, LinearSkyGivesClosedFormMoments) {
         irradiance.setLight("/dome", std::make_shared<EnvironmentLight>(EnvironmentLight::fromDesc(map, desc)));
         const double e0 = std::numbers::pi * a + 2.0 * std::numbers::pi / 3.0 * b.dot(n), e1 = std::numbers::pi / 3.0 * (a + b.dot(n));
         for (std::uint32_t i = 0; i < asset->samples.size(); ++i) {
-            EXPECT_NEAR(irradiance.moments().sample(i)[0], e0, 0.005 * e0) << "normal " << n;
-            EXPECT_NEAR(irradiance.moments().sample(i)[3], e1, 0.01 * e1) << "normal " << n;
+            EXPECT_NEAR(irradiance.moments().sample(i)[0], e0, 0.005 * e0) << "normal " << n << kindName;
+            EXPECT_NEAR(irradiance.moments().sample(i)[3], e1, 0.01 * e1) << "normal " << n << kindName;
         }
     }
+}
+
+// On both kinds of vector: the visible transport dotted with the sky, and the dome's
+// unoccluded integral (dome_convolution.h) minus nothing.
+TEST(EnvironmentLight, LinearSkyGivesClosedFormMoments) {
+    // L(w) = a + b.w: E_0 = integral L mu dw = pi a + (2 pi / 3) b.n and
+    // E_1 = integral L mu (2 mu - 1) dw = (pi / 3)(a + b.n), for an unoccluded normal n.
+    const double a = 2.0;
+    const Imath::V3d b(0.5, 0.8, -0.3);
+    const auto map = mapOf(512, 256, [&](const Imath::V3d& d) { return Imath::V3f(float(a + b.dot(d))); });
+    for (EnvironmentVectorKind kind : {EnvironmentVectorKind::Visible, EnvironmentVectorKind::Occluded})
+        expectLinearSkyMoments(hemisphereAsset(32, 2, kind), a, b, map);
 }
 
 TEST(EnvironmentLight, DomeRotationEqualsShiftedMap) {

@@ -2,13 +2,14 @@
 // sphere, a torus, the concave built-in candle): the relighting engine (RelightEngine)
 // against the exact dipole gather (referenceGather) for a point light, a distant light and
 // a dome with a procedural lat-long map, with issue 13's figures per sample
-// (bench/image_accuracy.h). What holds today is asserted: relative RMSE <= 1% for the
-// analytic lights, <= 3% for the dome (its target is 1%). Issue 13's other targets (95th
-// percentile of the relative luminance error <= 3%, chromaticity 95th percentile <= 0.005,
-// no negative radiance) are printed and not yet met: measured at 2,048 samples, luminance
-// p95 6-13%, chromaticity p95 0.007-0.05, and up to 30% of the candle's shadowed samples
-// negative under a point light. The compression's error is absolute (about 1e-3 of the
-// peak), so samples lit only through the profile's far tail carry large relative errors.
+// (bench/image_accuracy.h). What holds today is asserted: relative RMSE <= 1% for every
+// light; for the dome also issue 13's per-sample targets, 95th percentile of the relative
+// luminance error <= 3% and chromaticity 95th percentile <= 0.005 (measured at 2,048 samples
+// with the occluded-residual dome vectors: p95 1.4-1.9%, chromaticity 0.002-0.0025; with 128
+// terms of the visible transport the RMSE alone was up to 3%). Under the analytic lights those
+// two are printed and not yet met (p95 2.8-6.5%, chromaticity 0.004-0.021): the compression's
+// error is absolute (about 1e-3 of the peak), so samples lit only through the profile's far
+// tail carry large relative errors. No negative radiance anywhere.
 //
 // The lossless transfer (keep 1, energy 1), summed directly here, separates the PCA
 // profile basis (docs/ARCHITECTURE.md#pca) from the two-step wavelet compression
@@ -241,7 +242,8 @@ Measured measure(const std::shared_ptr<const TranslucentAsset>& asset, LightCase
 // The compressed transfer's error near zero, as a fraction of the peak L: at the defaults
 // it stays below 1e-3 on these assets (measured: see the printed figures).
 constexpr double kNoiseFloor = 2e-3;
-// A dome's E carries its visibility vectors' truncation error (docs/ARCHITECTURE.md#dome-light).
+// A dome's E carries its residual vectors' truncation error (docs/ARCHITECTURE.md#dome-light):
+// where the engine zeroes E, the exact E must be within this fraction of the peak.
 constexpr double kDomeNoiseFloor = 1e-2;
 
 void expectAccuracyAtTheDefaults(const Shape& shape) {
@@ -256,7 +258,11 @@ void expectAccuracyAtTheDefaults(const Shape& shape) {
                     100.0 * a.luminance.p95, 100.0 * a.darkerHalf.p95, a.chromaticity.p95, a.negativeFraction,
                     100.0 * r.basis, static_cast<unsigned long long>(r.noise.values), r.noise.deepest, r.zeroedTruth,
                     r.zeroedIrradianceTruth);
-        EXPECT_LE(a.relativeRmse, light == LightCase::Dome ? 0.03 : 0.01) << shape.name << ' ' << name(light);
+        EXPECT_LE(a.relativeRmse, 0.01) << shape.name << ' ' << name(light);
+        if (light == LightCase::Dome) {
+            EXPECT_LE(a.luminance.p95, 0.03) << shape.name;
+            EXPECT_LE(a.chromaticity.p95, 0.005) << shape.name;
+        }
         // The basis must leave most of the budget to the compression.
         EXPECT_LE(r.basis, 0.005) << shape.name << ' ' << name(light);
         // No negative radiance, and the zeroing stays within the noise: it happens only where
