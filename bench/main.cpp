@@ -11,7 +11,7 @@ namespace {
 void printUsage(std::FILE* out, std::span<const opal::bench::Subcommand> subcommands) {
     std::fprintf(out, "usage: opal-bench <subcommand> [options]   (opal-bench <subcommand> --help)\n\nsubcommands:\n");
     for (const opal::bench::Subcommand& s : subcommands)
-        std::fprintf(out, "  %-10.*s %.*s\n", static_cast<int>(s.name.size()), s.name.data(),
+        std::fprintf(out, "  %-13.*s %.*s\n", static_cast<int>(s.name.size()), s.name.data(),
                      static_cast<int>(s.description.size()), s.description.data());
 }
 
@@ -20,7 +20,8 @@ void printUsage(std::FILE* out, std::span<const opal::bench::Subcommand> subcomm
 int main(int argc, char** argv) {
     const std::array subcommands = {opal::bench::basisSubcommand(), opal::bench::bakeSubcommand(),
                                     opal::bench::relightSubcommand(), opal::bench::transferRowSubcommand(),
-                                    opal::bench::accuracySubcommand()};
+                                    opal::bench::accuracySubcommand(),
+                                    opal::bench::shadowFieldSubcommand()};
     if (argc < 2) {
         printUsage(stderr, subcommands);
         return 2;

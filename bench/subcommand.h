@@ -20,5 +20,6 @@ Subcommand bakeSubcommand();
 Subcommand relightSubcommand();
 Subcommand transferRowSubcommand();
 Subcommand accuracySubcommand();
+Subcommand shadowFieldSubcommand();
 
 }  // namespace opal::bench

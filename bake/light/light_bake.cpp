@@ -62,6 +62,25 @@ void writeLightAsset(const StemLock& lock, const ShadowField& field, LightBakeRe
     report.writeSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+LightBakeReport bakeLightAsset(const std::string& spec, const Emitter& emitter, const FieldSettings& settings,
+                               const std::filesystem::path& stem, ProgressSink* progress, const CancelToken& cancel) {
+    const auto start = std::chrono::steady_clock::now();
+    const StemLock lock{AssetStem(stem)};
+    LightBakeReport report;
+    report.spec = spec;
+    report.kind = emitter.kind;
+    report.settings = settings;
+    ShadowField field = bakeShadowField(emitter, settings, progress, cancel, &report.stats);
+    cancel.throwIfRequested();
+    field.bakeId = report.bakeId = lightBakeIdentifier(emitter, settings);
+    report.emitterRadius = field.emitterRadius;
+    report.innerRadius = field.radii.front();
+    report.outerRadius = field.radii.back();
+    writeLightAsset(lock, field, report);
+    report.totalSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return report;
+}
+
 void writeLightBakeReport(const std::filesystem::path& path, const LightBakeReport& r) {
     const FieldSettings& s = r.settings;
     nlohmann::ordered_json j;

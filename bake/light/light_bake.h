@@ -11,6 +11,7 @@
 
 #include "bake/light/emitter.h"
 #include "bake/light/field_bake.h"
+#include "bake/progress.h"
 #include "bake/stem_lock.h"
 
 #include <filesystem>
@@ -36,6 +37,13 @@ std::uint64_t lightBakeIdentifier(const Emitter& emitter, const FieldSettings& s
 
 // Writes the field's sidecar and layer for the stem `lock` holds (the field's bakeId set).
 void writeLightAsset(const StemLock& lock, const ShadowField& field, LightBakeReport& report);
+
+// The whole bake of `opal-bake light`: takes the stem's lock (before the work, so a second
+// bake of the stem fails at once), bakes the emitter's field, writes the asset and returns
+// the report (spec, times, sizes, errors). Throws what the steps throw, Cancelled when
+// cancelled (nothing written).
+LightBakeReport bakeLightAsset(const std::string& spec, const Emitter& emitter, const FieldSettings& settings,
+                               const std::filesystem::path& stem, ProgressSink* progress, const CancelToken& cancel);
 
 // The report as JSON (sizes, times, compression error), written atomically.
 void writeLightBakeReport(const std::filesystem::path& path, const LightBakeReport& report);

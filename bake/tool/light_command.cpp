@@ -3,7 +3,6 @@
 #include "bake/light/light_bake.h"
 #include "bake/light/light_spec.h"
 
-#include <chrono>
 #include <cstdio>
 
 namespace opal {
@@ -42,7 +41,6 @@ LightCommand::LightCommand(CLI::App& app)
 }
 
 int LightCommand::run(ProgressSink* progress, const CancelToken& cancel) const {
-    const auto start = std::chrono::steady_clock::now();
     Emitter emitter;
     try {
         emitter = parseLightSpec(spec_);
@@ -51,19 +49,8 @@ int LightCommand::run(ProgressSink* progress, const CancelToken& cancel) const {
         return 2;
     }
     try {
-        const StemLock lock{AssetStem(stem_)};  // before the work: a second bake of the stem fails at once
-        LightBakeReport report;
-        report.spec = spec_;
-        report.kind = emitter.kind;
-        report.settings = settings_;
-        ShadowField field = bakeShadowField(emitter, settings_, quiet_ ? nullptr : progress, cancel, &report.stats);
-        cancel.throwIfRequested();
-        field.bakeId = report.bakeId = lightBakeIdentifier(emitter, settings_);
-        report.emitterRadius = field.emitterRadius;
-        report.innerRadius = field.radii.front();
-        report.outerRadius = field.radii.back();
-        writeLightAsset(lock, field, report);
-        report.totalSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        const LightBakeReport report =
+            bakeLightAsset(spec_, emitter, settings_, stem_, quiet_ ? nullptr : progress, cancel);
         for (const std::string& w : report.warnings) std::fprintf(stderr, "opal-bake: warning: %s\n", w.c_str());
         if (!json_.empty()) writeLightBakeReport(json_, report);
         if (!quiet_) std::fprintf(stderr, "%s", formatLightBakeSummary(report).c_str());

@@ -77,7 +77,7 @@ private:
 // `offset` along the normal; scene may be null (no shadows). Parallel over samples.
 struct LightArrival {
     float cosTheta = 0.0f;
-    Imath::V3f irradiance;  // E_perp * visibility
+    Imath::V3f irradiance{0.0f};  // E_perp * visibility (Imath leaves a default vector uninitialized)
 };
 
 std::vector<LightArrival> lightArrivals(const AnalyticLight& light, const PlacedSamples& samples,

@@ -1,5 +1,6 @@
 #include "delegate/relight/mesh_irradiance.h"
 
+#include "delegate/relight/stopwatch.h"
 #include "raytrace/ray_scene.h"
 #include "schema/error.h"
 #include "schema/scatter/fresnel_moments.h"
@@ -10,9 +11,6 @@ namespace opal {
 
 namespace {
 
-// Shadow rays start this fraction of the scene's extent along the normal (as the bake's
-// environment visibility does), clear of the surface the sample lies on.
-constexpr float kShadowOffset = 1e-4f;
 constexpr std::uint32_t kTermsWithoutEnvironment = 2;
 
 std::uint32_t momentTerms(const TranslucentAsset& asset) {
@@ -44,14 +42,16 @@ void MeshIrradiance::compute(Contribution& c, const RayScene* scene) {
     c.moments = IrradianceMoments(std::uint32_t(placed_.positions.size()), terms_, basis_);
     c.referenceE.clear();
     const float offset = scene ? kShadowOffset * scene->extent() : 0.0f;
-    if (const auto* light = std::get_if<AnalyticLight>(&c.source)) {
-        c.arrivals = lightArrivals(*light, placed_, scene, offset);
-        addMoments(c.arrivals, response_, c.moments);
-        return;
-    }
-    if (const auto* field = std::get_if<std::shared_ptr<const ShadowFieldLight>>(&c.source)) {
+    lastUpdate_ = {};
+    const Stopwatch arrivals;
+    if (const auto* light = std::get_if<AnalyticLight>(&c.source)) c.arrivals = lightArrivals(*light, placed_, scene, offset);
+    if (const auto* field = std::get_if<std::shared_ptr<const ShadowFieldLight>>(&c.source))
         c.arrivals = (*field)->arrivals(placed_, scene, offset);
+    if (!isDome(c)) {
+        lastUpdate_.arrivalsMs = arrivals.ms();
+        const Stopwatch moments;
         addMoments(c.arrivals, response_, c.moments);
+        lastUpdate_.momentsMs = moments.ms();
         return;
     }
     const auto& dome = std::get<std::shared_ptr<const EnvironmentLight>>(c.source);
@@ -63,8 +63,10 @@ void MeshIrradiance::compute(Contribution& c, const RayScene* scene) {
 }
 
 void MeshIrradiance::resum() {
+    const Stopwatch clock;
     total_ = IrradianceMoments(std::uint32_t(placed_.positions.size()), terms_, basis_);
     for (const auto& [id, c] : lights_) total_ += c.moments;
+    lastUpdate_.resumMs = clock.ms();
 }
 
 void MeshIrradiance::setTransform(const Imath::M44d& objectToWorld, const RayScene& scene) {

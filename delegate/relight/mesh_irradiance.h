@@ -26,6 +26,10 @@ class RayScene;
 
 class MeshIrradiance {
 public:
+    // Shadow rays start this fraction of the ray scene's extent along the normal (as the
+    // bake's environment visibility does), clear of the surface the sample lies on.
+    static constexpr float kShadowOffset = 1e-4f;
+
     MeshIrradiance(std::shared_ptr<const TranslucentAsset> asset, const Imath::M44d& objectToWorld);
 
     std::uint32_t terms() const { return terms_; }
@@ -54,6 +58,13 @@ public:
     // dome, the transform or eta changes; the asset's visibility is traced at the first
     // call with a dome and kept (so an eta edit or a dome rotation traces no rays).
     std::vector<float> referenceIrradiance(double eta);
+    // The parts of the last light's recomputation (wall ms): its arrivals (E and the
+    // arrival cosine per sample; domes: none), its moments, and the re-sum of every light's
+    // term (setLight and removeLight; the others re-sum after several lights).
+    struct UpdateTimes {
+        double arrivalsMs = 0.0, momentsMs = 0.0, resumMs = 0.0;
+    };
+    const UpdateTimes& lastUpdate() const { return lastUpdate_; }
     // Bytes held: the placed samples, each light's moments and arrivals, the dome vectors.
     std::size_t memoryBytes() const;
 
@@ -86,6 +97,7 @@ private:
     std::unique_ptr<const EnvironmentReference> reference_;   // built with the first referenceIrradiance
     std::map<hd::SdfPath, Contribution> lights_;
     IrradianceMoments total_;
+    UpdateTimes lastUpdate_;
 };
 
 }  // namespace opal

@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -29,6 +30,24 @@ constexpr std::uint32_t kDecodeDivisor = 2;
 constexpr std::uint32_t kBlockSide = 2;
 
 double channelSum(const Imath::V3d& v) { return v.x + v.y + v.z; }
+
+// Adds the time since the last lap to a stage, when timing (stages non-null).
+class StageClock {
+public:
+    explicit StageClock(const ShadowFieldStages* stages) : on_(stages != nullptr) {
+        if (on_) last_ = std::chrono::steady_clock::now();
+    }
+    void lap(double& stageMs) {
+        if (!on_) return;
+        const auto now = std::chrono::steady_clock::now();
+        stageMs += std::chrono::duration<double, std::milli>(now - last_).count();
+        last_ = now;
+    }
+
+private:
+    bool on_;
+    std::chrono::steady_clock::time_point last_;
+};
 
 // The sphere light with the emitter's bounding radius whose intensity, seen from outside,
 // is the field's mean far-field intensity times the light's emission (analytic_light.h:
@@ -65,13 +84,25 @@ LoadedShadowField::LoadedShadowField(ShadowField f)
     for (std::uint32_t i = 0; i < directions.texels(); ++i)
         meanIntensity += lookup.farIntensity(Imath::V3d(directions.direction(i))) *
                          (directions.solidAngle(i) / (4.0 * kPi));
+    const CubeMapLayout grid(field.directionFaceSize);
+    farIntensities.resize(field.directionsPerShell());
+    tbb::parallel_for(std::uint32_t(0), field.directionsPerShell(), [&](std::uint32_t d) {
+        farIntensities[d] = lookup.farIntensity(Imath::V3d(grid.direction(d)).normalized());
+    });
     const std::uint32_t side = std::max<std::uint32_t>(1, layout.faceSize() / kBlockSide);
     blocks = 6 * side * side;
     for (std::uint32_t k = 0; k < layout.texels(); ++k) {
         const CubeMapTexel t = layout.texel(k);
-        texelDirections.push_back(layout.direction(k));
-        texelBlocks.push_back((t.face * side + t.v / kBlockSide) * side + t.u / kBlockSide);
+        texels.push_back({layout.direction(k), (t.face * side + t.v / kBlockSide) * side + t.u / kBlockSide});
     }
+}
+
+Imath::V3d LoadedShadowField::farIntensity(const FieldStencil& beyond) const {
+    const std::uint64_t outerShell = std::uint64_t(field.shells() - 1) * field.directionsPerShell();
+    Imath::V3d intensity(0.0);
+    for (std::uint32_t i = 0; i < beyond.count; ++i)
+        intensity += farIntensities[beyond.maps[i].map - outerShell] * beyond.maps[i].weight;
+    return intensity;
 }
 
 ShadowFieldLight::ShadowFieldLight(std::shared_ptr<const LoadedShadowField> field, const hd::LightDesc& desc)
@@ -116,23 +147,48 @@ struct ShadowFieldLight::Texels {
     Imath::V3d direction{0.0};
 };
 
+namespace {
+constexpr std::size_t kNoRay = std::numeric_limits<std::size_t>::max();
+}  // namespace
+
+struct ShadowFieldLight::LitBlock {
+    Imath::V3d e{0.0};
+    Imath::V3d direction{0.0};
+    std::size_t ray = kNoRay;  // its occlusion ray, or kNoRay (no scene, or the sample inside the sphere)
+};
+
+// A chunk's far-field occlusion rays and the samples they belong to.
+struct ShadowFieldLight::FarRays {
+    std::vector<Ray> rays;
+    std::vector<std::size_t> samples;
+    std::vector<std::uint8_t> blocked;
+};
+
 // A worker's buffers for arrivalInField, all zero between samples. Touched texels and
 // blocks are listed without a branch (the index is always written, the count advances
 // only for a first touch): the seen-test mispredicts on most of a sample's ~1,200 terms.
 struct ShadowFieldLight::Scratch {
-    std::vector<Imath::V3f> radiance;  // per texel of the decode layout
+    std::vector<Float4> radiance;  // per texel of the decode layout (RGB, 0)
     std::vector<std::uint8_t> seen, blockSeen;
     // The first `count` entries are live; one spare slot takes the write after the last.
     std::vector<std::uint32_t> touched, touchedBlocks;
     std::vector<Texels> blocks;
+    // Per sample: its lit blocks (irradiance, unit direction, ray or kNoRay) and their rays.
+    std::vector<LitBlock> lit;
+    std::vector<Ray> rays;
+    std::vector<std::uint8_t> blocked;
+    FarRays far;
 
     explicit Scratch(const LoadedShadowField& f)
-        : radiance(f.layout.texels(), Imath::V3f(0.0f)),
+        : radiance(f.layout.texels(), Float4{}),
           seen(f.layout.texels(), 0),
           blockSeen(f.blocks, 0),
           touched(f.layout.texels() + 1),
           touchedBlocks(f.blocks + 1),
-          blocks(f.blocks) {}
+          blocks(f.blocks),
+          lit(f.blocks),
+          rays(f.blocks),
+          blocked(f.blocks) {}
 };
 
 // Sums the stencil's weighted sparse maps into s.radiance: the interpolated field,
@@ -142,12 +198,13 @@ std::size_t ShadowFieldLight::interpolateMaps(const FieldStencil& stencil, Scrat
     // would otherwise reload on every term.
     std::uint32_t* const touched = s.touched.data();
     std::uint8_t* const seen = s.seen.data();
-    Imath::V3f* const radiance = s.radiance.data();
+    Float4* const radiance = s.radiance.data();
     std::size_t count = 0;
     for (std::uint32_t i = 0; i < stencil.count; ++i) {
-        const float weight = float(stencil.maps[i].weight);
+        const float w = float(stencil.maps[i].weight);
+        const Float4 weight = {w, w, w, w};
         const std::span<const std::uint32_t> texels = field_->maps.texels(stencil.maps[i].map);
-        const std::span<const Imath::V3f> terms = field_->maps.terms(stencil.maps[i].map);
+        const Float4* const terms = field_->maps.terms(stencil.maps[i].map).data();
         for (std::size_t j = 0; j < texels.size(); ++j) {
             const std::uint32_t k = texels[j];
             touched[count] = k;
@@ -162,44 +219,66 @@ std::size_t ShadowFieldLight::interpolateMaps(const FieldStencil& stencil, Scrat
 // The interpolated field, clamped, weighed by each texel's cosine integral and gathered
 // into visibility blocks; then one occlusion ray per lit block.
 LightArrival ShadowFieldLight::arrivalInField(const Imath::V3d& x, const Imath::V3d& n, const RayScene* scene,
-                                              float offset, Scratch& s) const {
+                                              float offset, Scratch& s, ShadowFieldStages* stages) const {
+    ShadowFieldStages ignored;
+    ShadowFieldStages& st = stages ? *stages : ignored;
+    StageClock clock(stages);
     const Imath::V3d p = toLight(x), nl = n * rotation_.transposed();
-    const std::size_t touched = interpolateMaps(field_->lookup.stencil(p), s);
+    const FieldStencil stencil = field_->lookup.stencil(p);
+    clock.lap(st.setupMs);
+    const std::size_t touched = interpolateMaps(stencil, s);
+    clock.lap(st.interpolationMs);
+    st.texels += touched;
+    for (std::uint32_t i = 0; stages && i < stencil.count; ++i) st.terms += field_->maps.texels(stencil.maps[i].map).size();
     std::size_t litBlocks = 0;
     for (std::size_t t = 0; t < touched; ++t) {
         const std::uint32_t k = s.touched[t];
         // Radiance is never negative: what the truncated Haar series rings below 0 is 0.
-        const Imath::V3f l(std::max(0.0f, s.radiance[k].x), std::max(0.0f, s.radiance[k].y),
-                           std::max(0.0f, s.radiance[k].z));
-        s.radiance[k] = Imath::V3f(0.0f);
+        const Float4 r = std::exchange(s.radiance[k], Float4{});
+        const Imath::V3f l(std::max(0.0f, r[0]), std::max(0.0f, r[1]), std::max(0.0f, r[2]));
         s.seen[k] = 0;
         if (l.x + l.y + l.z <= 0.0f) continue;
         const double w = field_->cosine.weight(k, nl);
         if (w <= 0.0) continue;
-        const std::uint32_t b = field_->texelBlocks[k];
+        const LoadedShadowField::Texel& texel = field_->texels[k];
+        const std::uint32_t b = texel.block;
         s.touchedBlocks[litBlocks] = b;
         litBlocks += 1u - s.blockSeen[b];
         s.blockSeen[b] = 1;
         const Imath::V3d e = Imath::V3d(l) * w;
         s.blocks[b].e += e;
-        s.blocks[b].direction += Imath::V3d(field_->texelDirections[k]) * channelSum(e);
+        s.blocks[b].direction += Imath::V3d(texel.direction) * channelSum(e);
     }
-    Imath::V3d total(0.0);
-    double cosineSum = 0.0;
+    clock.lap(st.cosineMs);
+    // The lit blocks in order, and one occlusion ray each: rays from one origin toward one
+    // emitter, traced together as coherent packets.
+    std::size_t lit = 0, rays = 0;
     const Imath::V3f origin = Imath::V3f(x + n * double(offset));
     for (std::size_t t = 0; t < litBlocks; ++t) {
         const std::uint32_t b = s.touchedBlocks[t];
         s.blockSeen[b] = 0;
-        const Texels lit = std::exchange(s.blocks[b], Texels{});
-        if (channelSum(lit.e) <= 0.0) continue;
-        const Imath::V3d d = lit.direction.normalized();
-        if (scene) {
-            const double reach = shadowReach(p, d) * scale_ * (1.0 - 1e-4);
-            if (reach > 0.0 && scene->occluded(Ray(origin, Imath::V3f(d * rotation_), 0.0f, float(reach)))) continue;
-        }
-        total += lit.e;
-        cosineSum += channelSum(lit.e) * std::max(0.0, d.dot(nl));
+        const Texels block = std::exchange(s.blocks[b], Texels{});
+        if (channelSum(block.e) <= 0.0) continue;
+        const Imath::V3d d = block.direction.normalized();
+        const double reach = scene ? shadowReach(p, d) * scale_ * (1.0 - 1e-4) : 0.0;
+        s.lit[lit] = {block.e, d, reach > 0.0 ? rays : kNoRay};
+        if (reach > 0.0) s.rays[rays++] = Ray(origin, Imath::V3f(d * rotation_), 0.0f, float(reach));
+        ++lit;
     }
+    if (rays) scene->occludedCoherent({s.rays.data(), rays}, {s.blocked.data(), rays});
+    st.rays += rays;
+    Imath::V3d total(0.0);
+    double cosineSum = 0.0;
+    for (std::size_t t = 0; t < lit; ++t) {
+        const LitBlock& block = s.lit[t];
+        if (block.ray != kNoRay && s.blocked[block.ray]) {
+            ++st.blocked;
+            continue;
+        }
+        total += block.e;
+        cosineSum += channelSum(block.e) * std::max(0.0, block.direction.dot(nl));
+    }
+    clock.lap(st.visibilityMs);
     const double sum = channelSum(total);
     if (!(sum > 0.0)) return {};
     const double mu = std::clamp(cosineSum / sum, 1e-3, 1.0);
@@ -207,39 +286,77 @@ LightArrival ShadowFieldLight::arrivalInField(const Imath::V3d& x, const Imath::
     return {float(mu), Imath::V3f(perp)};
 }
 
+// Beyond the outer sphere: the far-field point light, E_perp = I(w) / r^2. Its occlusion ray
+// (toward the emitter's centre, to its bounding sphere) is queued in `rays` for sample
+// `sample`: a chunk's samples trace theirs together, as packets of nearly parallel rays.
 LightArrival ShadowFieldLight::arrivalBeyond(const Imath::V3d& x, const Imath::V3d& n, const RayScene* scene,
-                                             float offset) const {
-    const ShadowField& f = field_->field;
+                                             float offset, FarRays& rays, std::size_t sample) const {
     const Imath::V3d p = toLight(x);
-    const Imath::V3d outward = p - f.centre;
-    const double r = outward.length();
-    const Imath::V3d w = outward / r;  // from the centre toward the sample
+    const FieldStencil stencil = field_->lookup.stencil(p);
+    const Imath::V3d w = stencil.direction;  // from the centre toward the sample
+    const double r = stencil.radius;
     const double mu = (n * rotation_.transposed()).dot(-w);
     if (mu <= 0.0) return {};
     if (scene) {
-        const Imath::V3f origin = Imath::V3f(x + n * double(offset));
         const double reach = shadowReach(p, -w) * scale_ * (1.0 - 1e-4);
-        if (reach > 0.0 && scene->occluded(Ray(origin, Imath::V3f(-w * rotation_), 0.0f, float(reach)))) return {};
+        if (reach > 0.0) {
+            rays.rays.push_back(Ray(Imath::V3f(x + n * double(offset)), Imath::V3f(-w * rotation_), 0.0f, float(reach)));
+            rays.samples.push_back(sample);
+        }
     }
-    Imath::V3d perp = field_->lookup.farIntensity(w) * emission_ / (r * r);
+    Imath::V3d perp = field_->farIntensity(stencil) * emission_ / (r * r);
     for (int c = 0; c < 3; ++c) perp[c] = std::min(perp[c], kMaxSampleIrradiance);
     return {float(mu), Imath::V3f(perp)};
 }
 
+void ShadowFieldLight::traceFarRays(const RayScene* scene, FarRays& far, std::vector<LightArrival>& result,
+                                    ShadowFieldStages* stages) const {
+    const std::size_t n = far.rays.size();
+    if (n == 0) return;
+    far.blocked.resize(n);
+    scene->occludedCoherent(far.rays, far.blocked);
+    for (std::size_t j = 0; j < n; ++j)
+        if (far.blocked[j]) result[far.samples[j]] = {};
+    if (stages) {
+        stages->rays += n;
+        for (std::uint8_t b : far.blocked) stages->blocked += b;
+    }
+    far.rays.clear();
+    far.samples.clear();
+}
+
 std::vector<LightArrival> ShadowFieldLight::arrivals(const PlacedSamples& samples, const RayScene* scene,
-                                                     float offset) const {
+                                                     float offset, ShadowFieldStages* stages) const {
     const std::size_t n = samples.positions.size();
     std::vector<LightArrival> result(n);
     const double outer = field_->field.radii.back();
     tbb::enumerable_thread_specific<Scratch> scratch([&] { return Scratch(*field_); });
+    tbb::enumerable_thread_specific<ShadowFieldStages> counted;
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 64), [&](const tbb::blocked_range<std::size_t>& range) {
         Scratch& s = scratch.local();
+        ShadowFieldStages* st = stages ? &counted.local() : nullptr;
         for (std::size_t i = range.begin(); i != range.end(); ++i) {
+            StageClock clock(st);
             const Imath::V3d x(samples.positions[i]), normal(samples.normals[i]);
             const bool beyond = (toLight(x) - field_->field.centre).length() > outer;
-            result[i] = beyond ? arrivalBeyond(x, normal, scene, offset) : arrivalInField(x, normal, scene, offset, s);
+            if (st) {
+                ++st->samples;
+                st->beyond += beyond;
+                clock.lap(st->setupMs);
+            }
+            if (!beyond) {
+                result[i] = arrivalInField(x, normal, scene, offset, s, st);
+                continue;
+            }
+            result[i] = arrivalBeyond(x, normal, scene, offset, s.far, i);
+            if (st) clock.lap(st->farFieldMs);
         }
+        StageClock clock(st);
+        traceFarRays(scene, s.far, result, st);
+        if (st) clock.lap(st->farFieldMs);
     });
+    if (stages)
+        for (const ShadowFieldStages& st : counted) *stages += st;
     return result;
 }
 

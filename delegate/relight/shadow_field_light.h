@@ -10,11 +10,13 @@
 //     W_k(n) the texel's clamped-cosine integral (cube_map_cosine.h) and V_k the visibility
 //     toward the emitter along texel k. V_k is traced, distance-aware: one occlusion ray per
 //     lit block of 4 x 4 texels, along the block's irradiance-weighted direction, ending
-//     where that ray enters the emitter's bounding sphere. A blocker beyond the emitter
+//     where that ray enters the emitter's bounding sphere (a sample's rays go to Embree
+//     together, as coherent packets). A blocker beyond the emitter
 //     (the far rim of a melted candle, seen past the flame) therefore never shadows it;
 //     the emitter itself is not in the ray scene and never blocks.
 //   - beyond the outer sphere, the field's far-field point light: E_perp = I(w) / r^2 with
-//     one occlusion ray to the emitter's bounding sphere.
+//     one occlusion ray to the emitter's bounding sphere (I(w) blended from a table made when
+//     the field loads; a chunk's rays traced together as packets).
 // What the irradiance moments need is one direction per sample: the light arrives over the
 // emitter's solid angle, so the sample keeps mu_eff, the irradiance-weighted mean cosine,
 // and E_perp = E / mu_eff. The cosine is then exact (E is), and F_t(eta, mu) is taken at
@@ -28,6 +30,7 @@
 #include "delegate/hd/scene_delegate.h"
 #include "delegate/relight/analytic_light.h"
 #include "delegate/relight/irradiance.h"
+#include "delegate/relight/shadow_field_stages.h"
 #include "delegate/relight/sparse_field_maps.h"
 #include "schema/asset/cube_map_cosine.h"
 #include "schema/asset/shadow_field_lookup.h"
@@ -54,10 +57,19 @@ struct LoadedShadowField {
     CubeMapCosineIntegral cosine;
     SparseFieldMaps maps;  // every map at `layout`'s face size, its nonzero texels
     Imath::V3d meanIntensity{0.0};  // of the far-field point light, over all directions
+    // The far-field intensity I(w) at each of the outer shell's sample directions
+    // (ShadowFieldLookup::farIntensity there): beyond the field a sample blends these with
+    // the stencil's weights instead of blending and integrating the maps, the same up to
+    // where the maps' ringing is clamped (each map's own, rather than the blend's).
+    std::vector<Imath::V3d> farIntensities;
+    Imath::V3d farIntensity(const FieldStencil& beyond) const;
     // Per texel of `layout`: its centre direction, and its visibility block (2 x 2 texels of
-    // `layout`, 4 x 4 of the maps).
-    std::vector<Imath::V3f> texelDirections;
-    std::vector<std::uint32_t> texelBlocks;
+    // `layout`, 4 x 4 of the maps), side by side for the per-sample loop.
+    struct Texel {
+        Imath::V3f direction;
+        std::uint32_t block = 0;
+    };
+    std::vector<Texel> texels;
     std::uint32_t blocks = 0;
 
     explicit LoadedShadowField(ShadowField f);
@@ -73,8 +85,10 @@ public:
 
     // The shadowed irradiance at each placed sample, in the one-direction form of
     // LightArrival (mu_eff, E / mu_eff). Shadow rays start `offset` along the normal; scene
-    // may be null (no shadows). Parallel over samples.
-    std::vector<LightArrival> arrivals(const PlacedSamples& samples, const RayScene* scene, float offset) const;
+    // may be null (no shadows). Parallel over samples. With `stages`, also adds what the
+    // call did to it (timed stages and counts; slower by the clock reads).
+    std::vector<LightArrival> arrivals(const PlacedSamples& samples, const RayScene* scene, float offset,
+                                       ShadowFieldStages* stages = nullptr) const;
 
     // The sphere light the specular layer uses for this light.
     const AnalyticLight& highlight() const { return highlight_; }
@@ -88,11 +102,16 @@ public:
 
 private:
     struct Texels;
+    struct LitBlock;
     struct Scratch;
     std::size_t interpolateMaps(const FieldStencil& stencil, Scratch& scratch) const;
     LightArrival arrivalInField(const Imath::V3d& x, const Imath::V3d& n, const RayScene* scene, float offset,
-                                Scratch& scratch) const;
-    LightArrival arrivalBeyond(const Imath::V3d& x, const Imath::V3d& n, const RayScene* scene, float offset) const;
+                                Scratch& scratch, ShadowFieldStages* stages) const;
+    struct FarRays;
+    LightArrival arrivalBeyond(const Imath::V3d& x, const Imath::V3d& n, const RayScene* scene, float offset,
+                               FarRays& rays, std::size_t sample) const;
+    void traceFarRays(const RayScene* scene, FarRays& rays, std::vector<LightArrival>& result,
+                      ShadowFieldStages* stages) const;
     Imath::V3d toLight(const Imath::V3d& world) const;  // a world point in the light's frame (mm)
     double shadowReach(const Imath::V3d& pointLight, const Imath::V3d& directionLight) const;
 

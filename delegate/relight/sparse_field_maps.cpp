@@ -8,7 +8,7 @@ SparseFieldMaps::SparseFieldMaps(const ShadowFieldLookup& lookup, std::uint32_t 
     const std::size_t maps = lookup.field().offsets.size() - 1;
     struct Sparse {
         std::vector<std::uint32_t> texels;
-        std::vector<Imath::V3f> terms;
+        std::vector<Float4> terms;
     };
     std::vector<Sparse> each(maps);
     offsets_.push_back(0);
@@ -19,7 +19,7 @@ SparseFieldMaps::SparseFieldMaps(const ShadowFieldLookup& lookup, std::uint32_t 
         for (std::uint32_t k = 0; k < terms.size(); ++k) {
             if (terms[k] == Imath::V3f(0.0f)) continue;
             each[m].texels.push_back(k);
-            each[m].terms.push_back(terms[k]);
+            each[m].terms.push_back(Float4{terms[k].x, terms[k].y, terms[k].z, 0.0f});
         }
     });
     offsets_.reserve(maps + 1);
@@ -35,7 +35,7 @@ std::span<const std::uint32_t> SparseFieldMaps::texels(std::uint64_t index) cons
     return {texels_.data() + offsets_[index], texels_.data() + offsets_[index + 1]};
 }
 
-std::span<const Imath::V3f> SparseFieldMaps::terms(std::uint64_t index) const {
+std::span<const Float4> SparseFieldMaps::terms(std::uint64_t index) const {
     return {terms_.data() + offsets_[index], terms_.data() + offsets_[index + 1]};
 }
 

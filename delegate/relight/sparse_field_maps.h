@@ -6,6 +6,7 @@
 // map's texels, so a query adds a few hundred terms instead of forming 6 faces.
 #pragma once
 
+#include "delegate/relight/float4.h"
 #include "schema/asset/shadow_field_lookup.h"
 
 #include <Imath/ImathVec.h>
@@ -23,16 +24,17 @@ public:
     SparseFieldMaps(const ShadowFieldLookup& lookup, std::uint32_t faceSize);
 
     // Map `index`'s nonzero texels (indices into a CubeMapLayout of faceSize) and their
-    // radiance terms, in increasing texel order.
+    // radiance terms (RGB and a zero, one SSE register each: a sample adds about a
+    // thousand), in increasing texel order.
     std::span<const std::uint32_t> texels(std::uint64_t index) const;
-    std::span<const Imath::V3f> terms(std::uint64_t index) const;
+    std::span<const Float4> terms(std::uint64_t index) const;
 
     std::size_t entries() const { return texels_.size(); }
 
 private:
     std::vector<std::uint64_t> offsets_;  // per map, into texels_ and terms_; one past the last
     std::vector<std::uint32_t> texels_;
-    std::vector<Imath::V3f> terms_;
+    std::vector<Float4> terms_;
 };
 
 }  // namespace opal

@@ -38,16 +38,11 @@ CubeMapCosineIntegral::CubeMapCosineIntegral(const CubeMapLayout& layout) {
             vector = -vector;
         }
         corners_.push_back(corners);
-        centres_.push_back(centre);
-        vectorSolidAngles_.push_back(vector);
-        sinHalfAngles_.push_back(std::sqrt(std::max(0.0, 1.0 - cosHalf * cosHalf)));
+        texels_.push_back({centre, vector, std::sqrt(std::max(0.0, 1.0 - cosHalf * cosHalf))});
     }
 }
 
-double CubeMapCosineIntegral::weight(std::uint32_t texel, const Imath::V3d& n) const {
-    const double c = n.dot(centres_[texel]);
-    if (c >= sinHalfAngles_[texel]) return std::max(0.0, n.dot(vectorSolidAngles_[texel]));
-    if (c <= -sinHalfAngles_[texel]) return 0.0;
+double CubeMapCosineIntegral::clippedWeight(std::uint32_t texel, const Imath::V3d& n) const {
     // Sutherland-Hodgman against n.w >= 0; the crossing of an edge with the plane, scaled
     // onto the sphere, lies on both great circles.
     const std::array<Imath::V3d, 4>& corners = corners_[texel];

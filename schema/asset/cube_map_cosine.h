@@ -13,6 +13,7 @@
 
 #include <Imath/ImathVec.h>
 
+#include <algorithm>
 #include <array>
 #include <span>
 #include <vector>
@@ -22,7 +23,15 @@ namespace opal {
 class CubeMapCosineIntegral {
 public:
     explicit CubeMapCosineIntegral(const CubeMapLayout& layout);
-    double weight(std::uint32_t texel, const Imath::V3d& normal) const;
+    // Inline: per-sample loops weigh a few hundred texels, most wholly above or below the
+    // horizon; only a texel the horizon crosses is clipped (out of line).
+    double weight(std::uint32_t texel, const Imath::V3d& normal) const {
+        const Texel& t = texels_[texel];
+        const double c = normal.dot(t.centre);
+        if (c >= t.sinHalfAngle) return std::max(0.0, normal.dot(t.vectorSolidAngle));
+        if (c <= -t.sinHalfAngle) return 0.0;
+        return clippedWeight(texel, normal);
+    }
 
     // Integral of w dw over a spherical polygon with great-circle edges between its unit
     // corners, for corners counter-clockwise seen from outside the sphere (negated for
@@ -30,9 +39,15 @@ public:
     static Imath::V3d vectorSolidAngle(std::span<const Imath::V3d> corners);
 
 private:
+    // What the fast path reads, together (one texel's data in one place).
+    struct Texel {
+        Imath::V3d centre, vectorSolidAngle;
+        double sinHalfAngle = 0.0;
+    };
+    double clippedWeight(std::uint32_t texel, const Imath::V3d& normal) const;
+
     std::vector<std::array<Imath::V3d, 4>> corners_;  // wound so that V points into the texel
-    std::vector<Imath::V3d> centres_, vectorSolidAngles_;
-    std::vector<double> sinHalfAngles_;
+    std::vector<Texel> texels_;
 };
 
 }  // namespace opal

@@ -1,11 +1,12 @@
 // Shadow-field lighting against direct integration of the same emitter: for each sample,
 // E = integral over the cone of the emitter's bounding sphere of L(w) max(0, n.w) V(w) dw,
 // by 32 x 32 stratified directions traced with Embree against the emitter's own geometry
-// (bake/light/emitter_scene.h) and, up to the emitter, against the asset. Two assets made
+// and, up to the emitter, against the asset (bake/light/direct_irradiance.h). Two assets made
 // in code: a convex ball under a flame, and a concave cup with the flame inside it (its far
 // wall lies beyond the flame from the near wall). Relative RMSE over the samples <= 5%.
 #include "tests/fieldlight/field_fixture.h"
 
+#include "bake/light/direct_irradiance.h"
 #include "bake/light/emitter_scene.h"
 #include "bake/light/flame_emitter.h"
 #include "raytrace/ray_scene.h"
@@ -42,37 +43,6 @@ const Flame& flame() {
     return *f;
 }
 
-// Direct E at world point x (normal n) for the flame placed at `at` (translation only).
-Imath::V3d directIrradiance(const EmitterScene& emitter, const RayScene& asset, const Imath::V3d& at,
-                            const Imath::V3d& x, const Imath::V3d& n) {
-    const BoundingSphere& b = emitter.bounds();
-    const Imath::V3d p = x - at, toCentre = b.centre - p;
-    const double d = toCentre.length();
-    const double cosMax = std::sqrt(std::max(0.0, 1.0 - (b.radius / d) * (b.radius / d)));
-    const Imath::V3d axis = toCentre / d;
-    const Imath::V3d e1 = (std::abs(axis.x) < 0.9 ? Imath::V3d(1, 0, 0) : Imath::V3d(0, 1, 0)).cross(axis).normalized();
-    const Imath::V3d e2 = axis.cross(e1);
-    const int side = 32;
-    const double solidAngle = 2.0 * kPi * (1.0 - cosMax);
-    Imath::V3d e(0.0);
-    for (int i = 0; i < side; ++i)
-        for (int j = 0; j < side; ++j) {
-            const double cosTheta = 1.0 - (i + 0.5) / side * (1.0 - cosMax), phi = 2.0 * kPi * (j + 0.5) / side;
-            const double sinTheta = std::sqrt(1.0 - cosTheta * cosTheta);
-            const Imath::V3d w = axis * cosTheta + (e1 * std::cos(phi) + e2 * std::sin(phi)) * sinTheta;
-            const double mu = n.dot(w);
-            if (mu <= 0.0) continue;
-            const Ray ray(Imath::V3f(p), Imath::V3f(w), 0.0f, 1e30f);
-            const std::optional<RayHit> hit = emitter.rays().intersect(ray);
-            const Imath::V3f l = emitter.radiance(ray, hit);
-            if (!hit || l.x + l.y + l.z <= 0.0f) continue;
-            const Ray shadow(Imath::V3f(x + n * 1e-3), Imath::V3f(w), 0.0f, hit->t);
-            if (asset.occluded(shadow)) continue;
-            e += Imath::V3d(l) * mu;
-        }
-    return e * (solidAngle / (side * side));
-}
-
 struct Samples {
     RenderMesh mesh;
     PlacedSamples placed;
@@ -90,8 +60,8 @@ double relativeRmse(const Samples& s, const Imath::V3d& at) {
     int lit = 0;
     for (std::size_t i = 0; i < arrivals.size(); ++i) {
         const Imath::V3d field = Imath::V3d(arrivals[i].irradiance) * double(arrivals[i].cosTheta);
-        const Imath::V3d direct =
-            directIrradiance(emitter, asset, at, Imath::V3d(s.placed.positions[i]), Imath::V3d(s.placed.normals[i]));
+        const Imath::V3d direct = directIrradiance(emitter, &asset, at, Imath::V3d(s.placed.positions[i]),
+                                                   Imath::V3d(s.placed.normals[i]), 1e-3);
         error += (field - direct).length2();
         norm += direct.length2();
         lit += direct.x > 0.0;

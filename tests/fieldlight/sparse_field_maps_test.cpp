@@ -31,7 +31,8 @@ TEST(SparseFieldMaps, WeightedSumsMatchTheLookupsSynthesis) {
             const auto texels = f.maps.texels(stencil.maps[m].map);
             const auto terms = f.maps.terms(stencil.maps[m].map);
             ASSERT_TRUE(std::is_sorted(texels.begin(), texels.end()));
-            for (std::size_t j = 0; j < texels.size(); ++j) sum[texels[j]] += terms[j] * float(stencil.maps[m].weight);
+            for (std::size_t j = 0; j < texels.size(); ++j)
+                sum[texels[j]] += Imath::V3f(terms[j][0], terms[j][1], terms[j][2]) * float(stencil.maps[m].weight);
         }
         for (std::size_t k = 0; k < sum.size(); ++k)
             for (int c = 0; c < 3; ++c) {
