@@ -5,6 +5,7 @@
 #include "delegate/preview/preview_prims.h"
 
 #include <algorithm>
+#include <utility>
 
 namespace opal::preview {
 namespace {
@@ -99,13 +100,27 @@ std::unique_ptr<hd::RenderPass> PreviewRenderDelegate::createRenderPass(hd::Rend
 }
 
 void PreviewRenderDelegate::commitResources(hd::RenderIndex& index) {
-    if (!scene_ || builtAt_ != meshSyncs_) {
-        auto built = std::make_unique<PreviewScene>(index);
-        std::lock_guard lock(mutex_);  // renderStats reads the scene's counts
-        scene_ = std::move(built);
-        builtAt_ = meshSyncs_;
+    try {
+        if (!scene_ || builtAt_ != meshSyncs_) {
+            auto built = std::make_unique<PreviewScene>(index);
+            std::lock_guard lock(mutex_);  // renderStats reads the scene's counts
+            scene_ = std::move(built);
+            builtAt_ = meshSyncs_;
+        }
+        scene_->updateAlbedos(index);
+    } catch (const std::exception& e) {
+        reportError(e.what());
     }
-    scene_->updateAlbedos(index);
+}
+
+void PreviewRenderDelegate::reportError(std::string message) {
+    std::lock_guard lock(mutex_);
+    errors_.push_back(std::move(message));
+}
+
+std::vector<std::string> PreviewRenderDelegate::takeErrors() {
+    std::lock_guard lock(mutex_);
+    return std::exchange(errors_, {});
 }
 
 std::vector<std::string> PreviewRenderDelegate::takeWarnings() {

@@ -44,15 +44,19 @@ public:
     std::map<hd::Token, hd::Value> renderStats() const override;
 
     std::unique_ptr<hd::RenderPass> createRenderPass(hd::RenderIndex& index) override;
-    // Rebuilds the Embree scene when a mesh synced or went, and the albedos every time.
+    // Rebuilds the Embree scene when a mesh synced or went, and the albedos every time. What
+    // fails (a mesh Embree refuses, a bad material) goes to takeErrors; the last scene stays.
     void commitResources(hd::RenderIndex& index) override;
     std::vector<std::string> takeWarnings() override;
+    std::vector<std::string> takeErrors() override;
 
     // For the render pass (on the thread that syncs): null before the first commit.
     const PreviewScene* scene() const { return scene_.get(); }
     FrameLook look() const;
     // The pass finished a frame (passes: 1) or started one (passes: 0).
     void framed(bool done, double milliseconds);
+    // For takeErrors: what failed in the pass.
+    void reportError(std::string message);
 
 private:
     // The host reads settings and stats on its own thread while the pass renders: both
@@ -63,6 +67,7 @@ private:
     int meshSyncs_ = 0, builtAt_ = -1;  // mesh syncs and removals; the count the scene was built at
     int lights_ = 0;
     int passes_ = 0;
+    std::vector<std::string> errors_;
     double frameMs_ = 0.0;
 };
 

@@ -31,12 +31,16 @@ std::vector<PreviewPixel> renderFrame(const PreviewScene& scene, const CameraVie
     if (scene.rays().meshCount() == 0) return pixels;
     const CameraView::PixelRect seen = view.pixelBounds(scene.rays().bounds());
     tbb::parallel_for(tbb::blocked_range<int>(seen.y0, seen.y1), [&](const tbb::blocked_range<int>& rows) {
-        for (int y = rows.begin(); y < rows.end(); ++y)
-            for (int x = seen.x0; x < seen.x1; ++x) {
-                const Ray ray = view.ray(x + 0.5, y + 0.5);
-                if (const std::optional<RayHit> hit = scene.rays().intersect(ray))
-                    pixels[std::size_t(y) * width + x] = shade(scene, ray, *hit, look);
-            }
+        // A row's rays traced together: neighbours' rays are coherent (ray_scene.h's packets).
+        std::vector<Ray> rays(std::size_t(seen.x1 - seen.x0));
+        std::vector<std::optional<RayHit>> hits(rays.size());
+        for (int y = rows.begin(); y < rows.end(); ++y) {
+            for (int x = seen.x0; x < seen.x1; ++x) rays[std::size_t(x - seen.x0)] = view.ray(x + 0.5, y + 0.5);
+            scene.rays().intersectCoherent(rays, hits);
+            for (int x = seen.x0; x < seen.x1; ++x)
+                if (const std::optional<RayHit>& hit = hits[std::size_t(x - seen.x0)])
+                    pixels[std::size_t(y) * width + x] = shade(scene, rays[std::size_t(x - seen.x0)], *hit, look);
+        }
     });
     return pixels;
 }

@@ -41,13 +41,14 @@ void writeAov(hd::RenderBuffer& buffer, const hd::AovDescriptor& aov, const std:
 
 void PreviewRenderPass::execute(const hd::RenderPassState& state, const std::vector<hd::AovBinding>& aovs) {
     converged_ = false;
+    // Reported, not thrown: an exception made here must not outlive the module, which a
+    // host may unload while unwinding (the host's renderToConvergence throws its own).
     try {
         render(state, aovs);
-    } catch (...) {
-        converged_ = true;  // a failed frame is final: the buffers keep what they held
-        throw;
+    } catch (const std::exception& e) {
+        delegate_.reportError(e.what());
     }
-    converged_ = true;
+    converged_ = true;  // a failed frame is final: the buffers keep what they held
 }
 
 void PreviewRenderPass::render(const hd::RenderPassState& state, const std::vector<hd::AovBinding>& aovs) {

@@ -14,9 +14,9 @@ class PreviewRenderPass final : public hd::RenderPass {
 public:
     PreviewRenderPass(hd::RenderIndex& index, PreviewRenderDelegate& delegate) : index_(index), delegate_(delegate) {}
 
-    // Throws opal::Error for a camera the index lacks or rejects, an AOV the preview does
-    // not render, or a buffer missing; the buffers then keep what they held (and the pass
-    // counts as converged: the failed frame is final).
+    // A camera the index lacks or rejects, an AOV the preview does not render or a buffer
+    // missing is reported through the delegate's takeErrors; the buffers then keep what
+    // they held and the pass counts as converged (the failed frame is final).
     void execute(const hd::RenderPassState& state, const std::vector<hd::AovBinding>& aovs) override;
     bool isConverged() const override { return converged_; }
 
