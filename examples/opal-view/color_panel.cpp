@@ -1,7 +1,5 @@
 #include "examples/opal-view/color_panel.h"
 
-#include "delegate/hd/aov.h"
-
 #include <imgui.h>
 
 #include <vector>
@@ -19,15 +17,9 @@ std::string pick(const char* label, const std::string& current, const std::vecto
     return chosen;
 }
 
-std::vector<std::string> aovNames() {
-    std::vector<std::string> names;
-    for (const hd::AovDescriptor& aov : hd::aovTable()) names.push_back(aov.name);
-    return names;
-}
-
 }  // namespace
 
-void drawColorPanel(DisplayPicture& picture, DisplaySettings& settings) {
+void drawColorPanel(DisplayPicture& picture, DisplaySettings& settings, const std::vector<std::string>& aovs) {
     if (!ImGui::CollapsingHeader("Color", ImGuiTreeNodeFlags_DefaultOpen)) return;
     const ColorConfig& config = picture.config();
     if (const std::string display = pick("display", picture.display(), config.displays()); !display.empty()) {
@@ -47,7 +39,7 @@ void drawColorPanel(DisplayPicture& picture, DisplaySettings& settings) {
         settings.grade.gamma = gamma;
         ++settings.version;
     }
-    if (const std::string aov = pick("AOV", settings.aov, aovNames()); !aov.empty()) {
+    if (const std::string aov = pick("AOV", settings.aov, aovs); !aov.empty()) {
         settings.aov = aov;
         ++settings.version;
     }

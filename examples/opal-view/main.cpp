@@ -22,7 +22,9 @@ void defineOptions(CLI::App& app, opal::view::ViewOptions& options, std::string&
                    "Render to convergence, save the window (interface included) to this PNG and exit");
     app.add_option("--script", options.script, "Run the actions in this file, one per line")->check(CLI::ExistingFile);
     app.add_option("--size", size, "Window size WIDTHxHEIGHT (default 1280x720)");
-    app.add_option("--delegate", options.delegate, "Renderer plugin type (default: the registry's default)");
+    app.add_option("--delegate", options.delegate,
+                   "Renderer plugin type to render with (default: the registry's default; the picker, "
+                   "View > Render delegates, lists them)");
 }
 
 // The script's actions, then --screenshot's: wait for convergence, save, quit.

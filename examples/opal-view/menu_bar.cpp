@@ -64,6 +64,7 @@ std::optional<FileRequest> MenuBar::draw(ViewerModel& model, PanelVisibility& pa
             ImGui::MenuItem("Light gizmos", "G", &panels.gizmos);
             ImGui::MenuItem("Render stats", nullptr, &panels.stats);
             ImGui::MenuItem("Render settings", nullptr, &panels.settings);
+            ImGui::MenuItem("Render delegates", nullptr, &panels.delegates);
             ImGui::EndMenu();
         }
         if (!status.empty()) ImGui::TextDisabled("  %s", status.c_str());

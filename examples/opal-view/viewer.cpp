@@ -5,6 +5,7 @@
 #include "delegate/output/preview_writer.h"
 #include "examples/opal-view/color_panel.h"
 #include "examples/opal-view/delegate_panels.h"
+#include "examples/opal-view/delegate_picker.h"
 #include "examples/opal-view/keyboard_help.h"
 #include "examples/opal-view/probe_tooltip.h"
 #include "examples/opal-view/core/default_scene.h"
@@ -83,7 +84,8 @@ bool opensGivenScene(const ViewOptions& options, const std::vector<ScriptAction>
 }  // namespace
 
 Viewer::Viewer(const ViewOptions& options, std::vector<ScriptAction> script)
-    : renderer_(loadRenderer(options.delegate, std::cerr)),
+    : registry_(hostRegistry(std::cerr)),
+      renderer_(loadRenderer(registry_, options.delegate)),
       window_(options.width, options.height, "opal-view"),
       imgui_(window_),
       display_(ColorConfig::fromEnvironment()),
@@ -109,12 +111,7 @@ void Viewer::open(const std::filesystem::path& file) {
     converter_.take();
     if (reference_) reference_->drain();
     model_.open(file);
-    const ColorConfig config = delegateColorConfig(*renderer_.delegate);
-    if (config.file() != display_.config().file()) {
-        display_ = DisplayPicture(config);
-        converter_.setConfig(config);
-        ++settings_.version;
-    }
+    const ColorConfig config = adoptDelegateConfig();
     // Whatever the config: the new scene's first reference picture may carry the same tag
     // as the old scene's last one.
     if (reference_) reference_->reset(config);
@@ -131,6 +128,55 @@ void Viewer::open(const std::filesystem::path& file) {
     shownApplied_ = 0;
 }
 
+ColorConfig Viewer::adoptDelegateConfig() {
+    const ColorConfig config = delegateColorConfig(*renderer_.delegate);
+    if (config.file() != display_.config().file()) {
+        display_ = DisplayPicture(config);
+        converter_.setConfig(config);
+        ++settings_.version;
+    }
+    return config;
+}
+
+void Viewer::useDelegate(const std::string& typeName) {
+    const RendererPluginInfo& info = requireDelegate(registry_, typeName);
+    if (info.typeName == renderer_.plugin.info().typeName) return;
+    LoadedRenderer next = loadRenderer(registry_, info.typeName);  // the old one renders on meanwhile
+    if (wipe_.on) setWipe(false, std::nullopt);
+    converter_.drain();  // it may be reading the old session's buffer
+    converter_.take();
+    const int draftBlock = useDraftPictures(*next.delegate);
+    try {
+        model_.useDelegate(*next.delegate);
+    } catch (const std::exception&) {
+        model_.useDelegate(*renderer_.delegate);  // the scene renders as it did
+        throw;
+    }
+    referenceDelegate_.reset();  // the wipe's, of the old plugin
+    renderer_ = std::move(next);  // the old delegate goes, its sessions gone already
+    draftBlock_ = draftBlock;
+    adoptDelegateConfig();
+    if (model_.isOpen() && !model_.session().renders(settings_.aov)) settings_.aov = "color";
+    ++settings_.version;
+    settingsProblem_.clear();
+    requested_ = shown_ = {};
+    shownApplied_ = 0;
+    hud_.message = "renderer: " + renderer_.plugin.info().displayName;
+}
+
+std::string Viewer::delegateListing() { return view::delegateListing(registry_, renderer_.plugin.info().typeName); }
+
+void Viewer::carryOutDelegateChoice() {
+    if (!chosenDelegate_) return;
+    const std::string chosen = *std::exchange(chosenDelegate_, std::nullopt);
+    try {
+        useDelegate(chosen);
+    } catch (const std::exception& e) {
+        hud_.message = std::string("error: ") + e.what();
+        std::cerr << "opal-view: " << hud_.message << '\n';
+    }
+}
+
 void Viewer::frame() {
     window_.pollEvents();
     openDropped();
@@ -141,6 +187,7 @@ void Viewer::frame() {
     const auto [width, height] = window_.framebufferSize();
     if (width > 0 && height > 0) model_.setViewport(width, height);
     if (model_.isOpen()) drawInterface();
+    carryOutDelegateChoice();
     ++framesSincePanels_;
     collectMessages();
     if (script_ && script_->step(*this)) script_.reset();
@@ -222,12 +269,14 @@ void Viewer::drawInterface() {
     drawLightPanel(model_, lightPanel_);
     drawEnvironmentPanel(model_, environment_);
     drawCameraPanel(model_);
-    drawColorPanel(display_, settings_);
+    drawColorPanel(display_, settings_, model_.session().aovs());
     drawWipeToggle();
     ImGui::End();
     drawKeyboardHelp(panels_.help);
     drawStatsPanel(*renderer_.delegate, panels_.stats);
     drawRenderSettingsPanel(model_, *renderer_.delegate, panels_.settings, settingsProblem_);
+    chosenDelegate_ = drawDelegatePicker(delegateChoices(registry_, renderer_.plugin.info().typeName),
+                                         registry_.problems(), panels_.delegates);
     if (panels_.probe) drawProbeTooltip(model_, shownPicture(), shownAov_);
     if (panels_.gizmos) drawLightGizmos(model_);
     drawHud(model_, hud_);
@@ -408,6 +457,9 @@ void Viewer::setGamma(double gamma) {
 
 void Viewer::setAov(const std::string& aov) {
     if (!hd::findAov(aov)) throw Error("unknown AOV '" + aov + "' (AOVs: " + hd::aovNameList() + ")");
+    if (model_.isOpen() && !model_.session().renders(aov))
+        throw Error("the renderer " + renderer_.plugin.info().displayName + " renders no AOV '" + aov + "' (it renders " +
+                    model_.session().aovList() + ")");
     settings_.aov = aov;
     ++settings_.version;
 }
@@ -418,8 +470,9 @@ void Viewer::showPanel(const std::string& panel, bool open) {
                   : panel == "settings" ? &panels_.settings
                   : panel == "probe"    ? &panels_.probe
                   : panel == "gizmos"   ? &panels_.gizmos
+                  : panel == "delegates" ? &panels_.delegates
                                         : nullptr;
-    if (!shown) throw Error("unknown panel '" + panel + "' (panels: help, stats, settings, probe, gizmos)");
+    if (!shown) throw Error("unknown panel '" + panel + "' (panels: help, stats, settings, probe, gizmos, delegates)");
     *shown = open;
     framesSincePanels_ = 0;
 }

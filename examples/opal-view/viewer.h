@@ -45,6 +45,11 @@ public:
     void setExposure(double stops) override;
     void setGamma(double gamma) override;
     void setAov(const std::string& aov) override;
+    // Tears the render session down and builds it again on the new plugin's delegate (the
+    // same scene, camera, edits and display; the settings panel follows its descriptors);
+    // if the new delegate refuses the scene, the old one renders it again and this throws.
+    void useDelegate(const std::string& typeName) override;
+    std::string delegateListing() override;
     void setWipe(bool on, std::optional<double> split) override;
     void showPanel(const std::string& panel, bool open) override;
     bool pictureSettled() override;
@@ -81,8 +86,13 @@ private:
     void openDropped();
     // The frame the buffers hold now (passes, syncs, display settings).
     PictureTag currentTag() const;
+    // The display follows the delegate's OCIO config (a scene's opal:ocioConfig); returns it.
+    ColorConfig adoptDelegateConfig();
+    // What the picker chose this frame, carried out once the interface is drawn.
+    void carryOutDelegateChoice();
 
-    LoadedRenderer renderer_;  // first: outlives the session that renders with it
+    PluginRegistry registry_;  // what the delegate picker lists
+    LoadedRenderer renderer_;  // outlives the session that renders with it
     std::optional<RenderDelegateHandle> referenceDelegate_;  // the wipe's, made when first needed
     Window window_;
     ImGuiLayer imgui_;
@@ -104,6 +114,7 @@ private:
     LightPanelState lightPanel_;
     MaterialPanelState materialPanel_;
     std::string settingsProblem_;
+    std::optional<std::string> chosenDelegate_;  // by the picker, this frame
     EnvironmentPanelState environment_;
     int framesSincePanels_ = 0;  // interface frames drawn since a script opened or closed a panel
     std::string renderError_;

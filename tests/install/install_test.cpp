@@ -111,7 +111,8 @@ TEST_F(InstallTree, HoldsEveryProgramThePluginTheColorConfigAndTheSchema) {
         EXPECT_EQ(help.exitCode, 0) << program << ": " << help.err;
     }
     for (const fs::path& file : {plugins / "plugInfo.json", plugins / "opalDelegate" / "plugInfo.json",
-                                 plugins / "opalDelegate" / "opalDelegate.so", data / "ocio" / "config.ocio",
+                                 plugins / "opalDelegate" / "opalDelegate.so", plugins / "opalPreview" / "plugInfo.json",
+                                 plugins / "opalPreview" / "opalPreview.so", data / "ocio" / "config.ocio",
                                  data / "usd" / "plugInfo.json", data / "usd" / "generatedSchema.usda"})
         EXPECT_TRUE(fs::is_regular_file(file)) << file;
 }
@@ -145,6 +146,10 @@ TEST_F(InstallTree, ListsTheInstalledDelegate) {
     EXPECT_NE(list.out.find("library: " + (plugins / "opalDelegate" / "opalDelegate.so").string()), std::string::npos)
         << list.out;
     EXPECT_NE(list.out.find("skipped: none"), std::string::npos) << list.out;
+    // The preview delegate ships beside it, ranked after it.
+    const std::size_t preview = list.out.find("OpalPreviewRendererPlugin\n    display name: Opal Preview\n    priority: 200");
+    ASSERT_NE(preview, std::string::npos) << list.out;
+    EXPECT_GT(preview, list.out.find("OpalRendererPlugin")) << list.out;
 }
 
 TEST_F(InstallTree, BakesAndRendersWithTheInstalledProgramsOnly) {

@@ -1,5 +1,6 @@
 #include "examples/opal-view/core/render_session.h"
 
+#include "delegate/hd/aov.h"
 #include "schema/error.h"
 
 #include <algorithm>
@@ -24,10 +25,19 @@ bool inScene(const scene::Scene& scene, const hd::SdfPath& path) {
     return scene.lights.count(path) || scene.materials.count(path) || scene.meshes.count(path) || scene.cameras.count(path);
 }
 
+// The AOVs of Opal's table the delegate renders, in the table's order (Hydra hosts bind
+// only those a delegate has a default descriptor for).
+std::vector<std::string> renderedAovs(const hd::RenderDelegate& delegate) {
+    std::vector<std::string> names;
+    for (const hd::AovDescriptor& aov : hd::aovTable())
+        if (delegate.defaultAovDescriptor(aov.name)) names.push_back(aov.name);
+    return names;
+}
+
 }  // namespace
 
 RenderSession::RenderSession(hd::RenderDelegate& delegate, scene::Scene scene, Viewport viewport)
-    : delegate_(delegate), source_(scene), buffers_({}, true), index_(delegate) {
+    : delegate_(delegate), source_(scene), buffers_(renderedAovs(delegate), true), index_(delegate) {
     source_.populate(index_);
     for (const auto& entry : scene.lights) lights_.insert(entry.first);
     pass_ = delegate_.createRenderPass(index_);
@@ -104,7 +114,24 @@ std::vector<std::string> RenderSession::takeMessages() {
 const hd::RenderBuffer& RenderSession::buffer(const std::string& aov) const {
     for (const hd::AovBinding& binding : buffers_.bindings())
         if (binding.aov == aov) return *binding.buffer;
-    throw Error("the viewer binds no AOV '" + aov + "'");
+    throw Error("the renderer renders no AOV '" + aov + "' (it renders " + aovList() + ")");
+}
+
+std::vector<std::string> RenderSession::aovs() const {
+    std::vector<std::string> names;
+    for (const hd::AovBinding& binding : buffers_.bindings()) names.push_back(binding.aov);
+    return names;
+}
+
+bool RenderSession::renders(const std::string& aov) const {
+    const std::vector<std::string> names = aovs();
+    return std::find(names.begin(), names.end(), aov) != names.end();
+}
+
+std::string RenderSession::aovList() const {
+    std::string list;
+    for (const std::string& name : aovs()) list += (list.empty() ? "" : ", ") + name;
+    return list;
 }
 
 std::vector<hd::AovBinding> RenderSession::bindings(const std::vector<std::string>& aovs) const {

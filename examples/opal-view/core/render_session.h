@@ -71,8 +71,15 @@ public:
     // call, each prefixed "error: " or "warning: ".
     std::vector<std::string> takeMessages();
 
+    // The delegate's AOVs (those of hd/aov.h it has a descriptor for): the session binds
+    // only these, so a pass never gets an AOV its delegate does not render.
     const render::AovBuffers& buffers() const { return buffers_; }
+    // Throws opal::Error naming the AOVs there are for one the delegate does not render.
     const hd::RenderBuffer& buffer(const std::string& aov) const;
+    std::vector<std::string> aovs() const;  // the bound ones, in binding order
+    bool renders(const std::string& aov) const;
+    // "color, normal, ..." for messages.
+    std::string aovList() const;
     hd::RenderDelegate& delegate() const { return delegate_; }
 
 private:

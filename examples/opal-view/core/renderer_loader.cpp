@@ -1,13 +1,19 @@
 #include "examples/opal-view/core/renderer_loader.h"
 
+#include "examples/opal-view/core/delegate_choices.h"
 #include "plugin/search_paths.h"
 
 namespace opal::view {
 
-LoadedRenderer loadRenderer(const std::optional<std::string>& typeName, std::ostream& warnings) {
-    const PluginRegistry registry(hostSearchPaths(executablePath()));
+PluginRegistry hostRegistry(std::ostream& warnings) {
+    PluginRegistry registry(hostSearchPaths(executablePath()));
     for (const std::string& problem : registry.problems()) warnings << "opal-view: warning: " << problem << '\n';
-    RendererPluginHandle plugin = typeName ? registry.createRendererPlugin(*typeName) : registry.defaultRendererPlugin();
+    return registry;
+}
+
+LoadedRenderer loadRenderer(const PluginRegistry& registry, const std::optional<std::string>& typeName) {
+    RendererPluginHandle plugin = typeName ? registry.createRendererPlugin(requireDelegate(registry, *typeName).typeName)
+                                           : registry.defaultRendererPlugin();
     RenderDelegateHandle delegate = plugin.createRenderDelegate();
     return {std::move(plugin), std::move(delegate)};
 }

@@ -12,11 +12,15 @@ namespace opal::view {
 
 struct LoadedRenderer {
     RendererPluginHandle plugin;
-    RenderDelegateHandle delegate;
+    RenderDelegateHandle delegate;  // last: goes before the plugin it came from
 };
 
-// `typeName`: a renderer plugin type, else the registry's default. What the registry
-// skipped goes to `warnings`, one line each. Throws opal::Error when no plugin loads.
-LoadedRenderer loadRenderer(const std::optional<std::string>& typeName, std::ostream& warnings);
+// The registry this program searches; what it skipped goes to `warnings`, one line each.
+PluginRegistry hostRegistry(std::ostream& warnings);
+
+// `typeName`: one of the registry's renderer plugin types (delegate_choices.h's
+// requireDelegate: an unknown one throws opal::Error listing those there are), else the
+// registry's default. Throws opal::Error when the plugin does not load.
+LoadedRenderer loadRenderer(const PluginRegistry& registry, const std::optional<std::string>& typeName);
 
 }  // namespace opal::view

@@ -70,6 +70,8 @@ constexpr ActionForm Forms[] = {
     {"view W W", ActionKind::View},
     {"exposure N", ActionKind::Exposure},
     {"aov W", ActionKind::Aov},
+    {"delegate W", ActionKind::Delegate},
+    {"delegates", ActionKind::Delegates},
     {"gamma N", ActionKind::Gamma},
     {"camera frame", ActionKind::CameraFrame},
     {"camera reset", ActionKind::CameraReset},

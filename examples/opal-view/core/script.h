@@ -40,11 +40,15 @@
 //   view DISPLAY VIEW                  the OCIO display and view
 //   exposure STOPS                     display exposure
 //   gamma G                            display gamma: the shown values to the power 1 / G
-//   aov NAME                           the AOV shown (hd/aov.h)
+//   aov NAME                           the AOV shown (hd/aov.h), one the delegate renders
+//   delegate TYPE                      render with another renderer plugin the registry found
+//                                      (OpalPreviewRendererPlugin, ...): same scene, camera, edits
+//   delegates                          prints the delegate picker's list: every renderer plugin
+//                                      found ("* " marks the one in use) and what was skipped
 //   wipe on|off|X                      the A/B wipe: the engine left of a vertical line, the
 //                                      exact reference (opal:reference) right of it; X puts
 //                                      the line at that fraction of the width (0 to 1)
-//   panel help|stats|settings|probe on|off   the optional panels (the View menu)
+//   panel help|stats|settings|probe|delegates on|off   the optional panels (the View menu)
 //   gizmos on|off                      the light gizmos over the picture (View > Light gizmos)
 //   camera frame|reset                 frame everything; back to the camera the file opened with
 //   camera frame selection             frame the selected mesh
@@ -86,7 +90,7 @@ namespace opal::view {
 
 enum class ActionKind {
     Load, MaterialSet, MaterialReset, MaterialPreset, LightMove, LightTurn, LightSet, LightAdd, LightRemove, LightRename,
-    LightEnable, Environment, Undo, Redo, Setting, Panel, Gizmos, View, Exposure, Gamma, Aov, CameraFrame, CameraReset, CameraOrbit, CameraFocal, CameraUse, CameraFov, CameraClip, Select, Wipe, Time, Play, Wait, Drag, Screenshot,
+    LightEnable, Environment, Undo, Redo, Setting, Panel, Gizmos, View, Exposure, Gamma, Aov, Delegate, Delegates, CameraFrame, CameraReset, CameraOrbit, CameraFocal, CameraUse, CameraFov, CameraClip, Select, Wipe, Time, Play, Wait, Drag, Screenshot,
     SaveExr, SavePng, SaveUsda, Probe, Quit
 };
 

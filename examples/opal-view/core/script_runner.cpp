@@ -238,6 +238,14 @@ bool ScriptRunner::run(const ScriptAction& action, ScriptHost& host) {
     case ActionKind::Exposure: host.setExposure(action.numbers[0]); return true;
     case ActionKind::Gamma: host.setGamma(action.numbers[0]); return true;
     case ActionKind::Aov: host.setAov(action.words[0]); return true;
+    case ActionKind::Delegate:
+        host.useDelegate(action.words[0]);
+        say("delegate " + action.words[0]);
+        return true;
+    case ActionKind::Delegates:
+        std::printf("%s", host.delegateListing().c_str());
+        std::fflush(stdout);
+        return true;
     case ActionKind::Wipe:
         if (action.numbers.empty()) host.setWipe(action.words[0] == "on", std::nullopt);
         else host.setWipe(true, action.numbers[0]);

@@ -25,6 +25,11 @@ public:
     virtual void setExposure(double stops) = 0;
     virtual void setGamma(double gamma) = 0;  // throws opal::Error unless positive
     virtual void setAov(const std::string& aov) = 0;
+    // Renders with the renderer plugin of that type from now on (the same scene, camera and
+    // edits); throws opal::Error listing the available ones for an unknown type.
+    virtual void useDelegate(const std::string& typeName) = 0;
+    // The delegate picker's list (delegate_choices.h's delegateListing).
+    virtual std::string delegateListing() = 0;
     // The A/B wipe on or off; a split (a fraction of the width, 0 to 1; throws opal::Error
     // otherwise) moves its line and turns it on.
     virtual void setWipe(bool on, std::optional<double> split) = 0;

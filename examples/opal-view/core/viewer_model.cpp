@@ -37,7 +37,7 @@ bool sameCamera(const hd::CameraDesc& a, const hd::CameraDesc& b) {
 // what a saved scene authors.
 RenderSettingChanges ViewerModel::changedSettings() const {
     RenderSettingChanges changed;
-    for (const hd::RenderSettingDescriptor& setting : delegate_.renderSettingDescriptors()) {
+    for (const hd::RenderSettingDescriptor& setting : delegate_->renderSettingDescriptors()) {
         // The viewer's own draft pictures (viewer.cpp) change no converged pixel: not the scene's.
         if (setting.key == "opal:draftBlock") continue;
         const hd::Value value = renderSetting(setting.key);
@@ -46,7 +46,7 @@ RenderSettingChanges ViewerModel::changedSettings() const {
     return changed;
 }
 
-ViewerModel::ViewerModel(hd::RenderDelegate& delegate, int width, int height) : delegate_(delegate) {
+ViewerModel::ViewerModel(hd::RenderDelegate& delegate, int width, int height) : delegate_(&delegate) {
     viewport_ = {ViewCameraPath, width, height, {}};
 }
 
@@ -54,7 +54,7 @@ void ViewerModel::open(const std::filesystem::path& file) {
     SceneDocument document = loadDocument(file, assets_);
     for (const std::string& warning : assets_.takeWarnings()) document.scene.warnings.push_back(warning);
     const BoundingSphere bounds = sceneBounds(document.scene);
-    if (document.scene.renderSettings) scene::applyRenderSettings(*document.scene.renderSettings, delegate_);
+    if (document.scene.renderSettings) scene::applyRenderSettings(*document.scene.renderSettings, *delegate_);
 
     referenceSession_.reset();
     session_.reset();  // one index per delegate at a time: the old one goes first
@@ -78,9 +78,22 @@ void ViewerModel::open(const std::filesystem::path& file) {
     timeCode_ = document_->scene.timeCode;
     timeSource_ = file;
     playing = false;
-    session_ = std::make_unique<RenderSession>(delegate_, std::move(scene), viewport_);
+    session_ = std::make_unique<RenderSession>(*delegate_, std::move(scene), viewport_);
     submitted_ = viewport_;
     startReference();
+}
+
+void ViewerModel::useDelegate(hd::RenderDelegate& delegate) {
+    referenceSession_.reset();
+    referenceDelegate_ = nullptr;  // the old renderer's
+    session_.reset();  // one index per delegate at a time: the old one goes first
+    delegate_ = &delegate;
+    pendingSettings_.clear();      // the old delegate's
+    if (!edited_) return;
+    if (document_->scene.renderSettings) scene::applyRenderSettings(*document_->scene.renderSettings, delegate);
+    edited_->takeChanges();        // the new session's first sync takes every prim
+    session_ = std::make_unique<RenderSession>(delegate, edited_->renderedScene(), viewport_);
+    submitted_ = viewport_;
 }
 
 void ViewerModel::showReference(hd::RenderDelegate* reference) {
@@ -96,7 +109,7 @@ void ViewerModel::showReference(hd::RenderDelegate* reference) {
 
 void ViewerModel::startReference() {
     if (!referenceDelegate_ || !session_) return;
-    for (const hd::RenderSettingDescriptor& setting : delegate_.renderSettingDescriptors())
+    for (const hd::RenderSettingDescriptor& setting : delegate_->renderSettingDescriptors())
         referenceDelegate_->setRenderSetting(setting.key, renderSetting(setting.key));
     referenceDelegate_->setRenderSetting(ReferenceSetting, true);
     referenceSession_ = std::make_unique<RenderSession>(*referenceDelegate_, edited_->renderedScene(), submitted_);
@@ -378,21 +391,21 @@ void ViewerModel::setViewport(int width, int height) {
 }
 
 void ViewerModel::setRenderSetting(std::string_view key, const hd::Value& value) {
-    const std::vector<hd::RenderSettingDescriptor> settings = delegate_.renderSettingDescriptors();
+    const std::vector<hd::RenderSettingDescriptor> settings = delegate_->renderSettingDescriptors();
     const hd::RenderSettingDescriptor& setting = findSetting(settings, key);
     checkSettingValue(setting, value);
     pendingSettings_.emplace_back(setting.key, value);
 }
 
 void ViewerModel::setRenderSettingText(std::string_view key, std::string_view value) {
-    const std::vector<hd::RenderSettingDescriptor> settings = delegate_.renderSettingDescriptors();
+    const std::vector<hd::RenderSettingDescriptor> settings = delegate_->renderSettingDescriptors();
     setRenderSetting(key, parseSettingValue(findSetting(settings, key), value));
 }
 
 hd::Value ViewerModel::renderSetting(const hd::Token& key) const {
     for (auto it = pendingSettings_.rbegin(); it != pendingSettings_.rend(); ++it)
         if (it->first == key) return it->second;
-    return delegate_.renderSetting(key);
+    return delegate_->renderSetting(key);
 }
 
 int ViewerModel::update() {

@@ -133,6 +133,14 @@ public:
     // The value the delegate has, or the one waiting to be set.
     hd::Value renderSetting(const hd::Token& key) const;
     RenderSession& session() const { return *session_; }
+    // Renders on `delegate` from now on (which must outlive the model or the next call): the
+    // render index, pass and session are torn down and built again on it with the same
+    // edited scene, camera, viewport and undo history; the scene's own render settings are
+    // applied to it, settings changed on the old delegate are not (they are its own). The
+    // reference session stops (showReference again with the new renderer's). Throws
+    // opal::Error when the delegate refuses the scene; the model then has no session until
+    // the next useDelegate (isOpen() is false), so a host goes back to the old delegate.
+    void useDelegate(hd::RenderDelegate& delegate);
     // The A/B wipe's other side: the same scene, camera and settings rendered on
     // `reference` (a second delegate of the plugin, which must outlive the model or the
     // next call) with opal:reference on, in a session of its own that every edit also
@@ -153,7 +161,7 @@ private:
     void recordUndo();
     void restore(const EditState& state);
 
-    hd::RenderDelegate& delegate_;
+    hd::RenderDelegate* delegate_;  // never null
     scene::AssetCache assets_;
     std::filesystem::path file_;
     std::optional<SceneDocument> document_;
