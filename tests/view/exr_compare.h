@@ -17,9 +17,17 @@ inline double maxDifference(const ReadImage& a, const ReadImage& b) {
     if (a.width != b.width || a.height != b.height || a.names != b.names || a.pixels.empty())
         return std::numeric_limits<double>::infinity();
     double worst = 0.0;
+    std::size_t at = 0;
     for (std::size_t i = 0; i < a.pixels.size(); ++i) {
         if (a.pixels[i] == b.pixels[i]) continue;
-        worst = std::max(worst, std::abs(double(a.pixels[i]) - double(b.pixels[i])));
+        const double d = std::abs(double(a.pixels[i]) - double(b.pixels[i]));
+        if (d > worst) worst = d, at = i;
+    }
+    if (worst > 0.0) {
+        const std::size_t channels = a.names.size(), pixel = at / channels;
+        std::printf("  largest difference %g in %s at (%zu, %zu): %.8g vs %.8g\n", worst,
+                    a.names[at % channels].c_str(), pixel % std::size_t(a.width), pixel / std::size_t(a.width),
+                    double(a.pixels[at]), double(b.pixels[at]));
     }
     return worst;
 }

@@ -195,8 +195,10 @@ TEST(Save, AShadowFieldLightAddedFromABakedLightLayerIsSaved) {
     dir.write("field.script", litByFlame(dir, asset) + saveEverything(dir) + "quit\n");
     const ViewRun run = runOpalView(dir, "--size 480x320 --script " + shellWord(dir / "field.script"));
     ASSERT_EQ(run.exitCode, 0) << run.err;
-    // Measured 1.5e-5 at a specular pixel of 0.022: one step of its half floats there.
-    expectOpalRenderMatches(dir, 2e-5);
+    // The viewer's and opal-render's specular under this light differ by one binary16 step
+    // at some pixel (issue 15's open 1-ulp specular difference): measured 1.5e-5 at a pixel of
+    // 0.022, and 1.2e-4 at one of 0.151 (specular.B). One step at values up to 0.25.
+    expectOpalRenderMatches(dir, 1.25e-4);
     const std::string layer = slurpFile(dir / "saved.usda");
     EXPECT_NE(layer.find("def OpalShadowFieldLight \"Flame\""), std::string::npos) << layer;
     EXPECT_NE(layer.find("@./flame.light.opal@"), std::string::npos) << layer;
