@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 namespace opal {
 
@@ -36,28 +37,47 @@ Imath::V2f octahedralPoint(const Imath::V3f& n) {
     return {x, y};
 }
 
-// sum_t max(0, mu_t) P_m(mu_t) L_t over the texels, for one basis and moment count, written
-// for the compiler to vectorize (no branch in the loop).
+// k_m(mu) = max(0, mu) P_m(mu) for one basis, moments 0 .. M-1.
 template <FresnelBasis B, std::uint32_t M>
-void accumulate(const Imath::V3f& n, std::size_t texels, const float* dx, const float* dy, const float* dz,
-                const float* red, const float* green, const float* blue, float* out) {
-    float r[M] = {}, g[M] = {}, b[M] = {};
-    for (std::size_t t = 0; t < texels; ++t) {
-        const float mu = n.x * dx[t] + n.y * dy[t] + n.z * dz[t];
-        const float w = std::max(mu, 0.0f);
-        float k[M];
-        k[0] = w;
-        if constexpr (B == FresnelBasis::Schlick) {
-            const float s = 1.0f - mu, s2 = s * s;
-            if constexpr (M > 1) k[1] = w * (s2 * s2 * s);
-            if constexpr (M > 2) k[2] = w * s2;
-        } else {
-            if constexpr (M > 1) k[1] = w * (2.0f * mu - 1.0f);
-            if constexpr (M > 2) k[2] = w * ((6.0f * mu - 6.0f) * mu + 1.0f);
-        }
-        for (std::uint32_t m = 0; m < M; ++m) r[m] += k[m] * red[t], g[m] += k[m] * green[t], b[m] += k[m] * blue[t];
+inline void kernel(float mu, float* k) {
+    const float w = std::max(mu, 0.0f);
+    k[0] = w;
+    if constexpr (B == FresnelBasis::Schlick) {
+        const float s = 1.0f - mu, s2 = s * s;
+        if constexpr (M > 1) k[1] = w * (s2 * s2 * s);
+        if constexpr (M > 2) k[2] = w * s2;
+    } else {
+        if constexpr (M > 1) k[1] = w * (2.0f * mu - 1.0f);
+        if constexpr (M > 2) k[2] = w * ((6.0f * mu - 6.0f) * mu + 1.0f);
     }
-    for (std::uint32_t m = 0; m < M; ++m) out[3 * m] = r[m], out[3 * m + 1] = g[m], out[3 * m + 2] = b[m];
+}
+
+// sum_t k_m(n.w_t) L_t over the texels of the given [begin, end) ranges, for one basis and
+// moment count. kLanes partial sums per value, so that the compiler vectorizes across them
+// without reordering any one sum (the result does not depend on the instruction set).
+constexpr std::uint32_t kLanes = 8;
+
+template <FresnelBasis B, std::uint32_t M>
+void accumulate(const Imath::V3f& n, std::span<const std::pair<std::uint32_t, std::uint32_t>> ranges,
+                const float* dx, const float* dy, const float* dz, const float* red, const float* green,
+                const float* blue, float* out) {
+    float r[M][kLanes] = {}, g[M][kLanes] = {}, b[M][kLanes] = {};
+    const auto add = [&](std::uint32_t t, std::uint32_t l) {
+        float k[M];
+        kernel<B, M>(n.x * dx[t] + n.y * dy[t] + n.z * dz[t], k);
+        for (std::uint32_t m = 0; m < M; ++m) r[m][l] += k[m] * red[t], g[m][l] += k[m] * green[t], b[m][l] += k[m] * blue[t];
+    };
+    for (const auto& [begin, end] : ranges) {
+        std::uint32_t t = begin;
+        for (; t + kLanes <= end; t += kLanes)
+            for (std::uint32_t l = 0; l < kLanes; ++l) add(t + l, l);
+        for (; t < end; ++t) add(t, 0);
+    }
+    for (std::uint32_t m = 0; m < M; ++m) {
+        float sums[3] = {};
+        for (std::uint32_t l = 0; l < kLanes; ++l) sums[0] += r[m][l], sums[1] += g[m][l], sums[2] += b[m][l];
+        for (int c = 0; c < 3; ++c) out[3 * m + c] = sums[c];
+    }
 }
 
 }  // namespace
@@ -79,6 +99,15 @@ DomeConvolution::DomeConvolution(const CubeMapLayout& cube, std::span<const floa
         green_.push_back(radiance[3 * t + 1] * solidAngle);
         blue_.push_back(radiance[3 * t + 2] * solidAngle);
     }
+    // A row of a face lies between two lines of constant v, which the sphere sees as great
+    // circles: it is a convex spherical quadrilateral, wholly below a normal's horizon when
+    // its four corners are.
+    faceSize_ = cube.faceSize();
+    for (std::uint32_t face = 0; face < 6; ++face)
+        for (std::uint32_t v = 0; v < faceSize_; ++v)
+            for (std::uint32_t corner = 0; corner < 4; ++corner)
+                rowCorners_.push_back(CubeMapLayout::faceDirection(
+                    face, corner % 2 ? 1.0f : -1.0f, 2.0f * float(v + corner / 2) / float(faceSize_) - 1.0f));
     nodes_.resize(std::size_t(kNodes) * kNodes * terms * 3);
     tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, kNodes * kNodes, 8), [&](const auto& range) {
         for (std::uint32_t node = range.begin(); node != range.end(); ++node) {
@@ -90,8 +119,18 @@ DomeConvolution::DomeConvolution(const CubeMapLayout& cube, std::span<const floa
 }
 
 void DomeConvolution::sum(const Imath::V3f& n, float* out) const {
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> rows;  // texel ranges above the horizon
+    for (std::uint32_t row = 0; row < 6 * faceSize_; ++row) {
+        const Imath::V3f* c = rowCorners_.data() + 4 * std::size_t(row);
+        if (n.dot(c[0]) <= 0.0f && n.dot(c[1]) <= 0.0f && n.dot(c[2]) <= 0.0f && n.dot(c[3]) <= 0.0f) continue;
+        const std::uint32_t begin = row * faceSize_;
+        if (!rows.empty() && rows.back().second == begin)
+            rows.back().second += faceSize_;
+        else
+            rows.emplace_back(begin, begin + faceSize_);
+    }
     const auto run = [&](auto basis, auto moments) {
-        accumulate<decltype(basis)::value, decltype(moments)::value>(n, dx_.size(), dx_.data(), dy_.data(), dz_.data(),
+        accumulate<decltype(basis)::value, decltype(moments)::value>(n, rows, dx_.data(), dy_.data(), dz_.data(),
                                                                       red_.data(), green_.data(), blue_.data(), out);
     };
     using Schlick = std::integral_constant<FresnelBasis, FresnelBasis::Schlick>;

@@ -47,6 +47,8 @@ private:
     FresnelBasis basis_;
     // The texels as structure of arrays, radiance premultiplied by the texel's solid angle.
     std::vector<float> dx_, dy_, dz_, red_, green_, blue_;
+    std::uint32_t faceSize_ = 0;
+    std::vector<Imath::V3f> rowCorners_;  // per face row (index face * size + v): its 4 corners
     std::vector<float> nodes_;  // kGridSize^2 x terms x 3
 };
 
