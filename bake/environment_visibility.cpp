@@ -64,7 +64,8 @@ struct RayScratch {
 // The occluded residual vectors of one sample, m after m: vectors[m * texels + t] = the sum,
 // over the texel's rays above the sample's horizon that hit the mesh, of mu P_m(mu) times
 // the ray's share of the texel's solid angle.
-void occludedVectors(const SurfaceSample& s, const RayScene& scene, const CubeDirections& cube, std::uint32_t terms,
+// Returns whether any ray was blocked (else every vector is zero).
+bool occludedVectors(const SurfaceSample& s, const RayScene& scene, const CubeDirections& cube, std::uint32_t terms,
                      FresnelBasis basis, float offset, RayScratch& scratch) {
     const std::size_t texels = cube.centre.size();
     const float horizon = -2.0f / float(cube.faceSize);
@@ -84,13 +85,16 @@ void occludedVectors(const SurfaceSample& s, const RayScene& scene, const CubeDi
     }
     scratch.blocked.resize(scratch.rays.size());
     scene.occludedCoherent(scratch.rays, scratch.blocked);  // neighbouring rays from one origin
+    bool any = false;
     for (std::size_t k = 0; k < scratch.rays.size(); ++k) {
         if (!scratch.blocked[k]) continue;
+        any = true;
         const std::uint32_t r = scratch.index[k], t = r / kRaysPerTexel;
         const float mu = s.normal.dot(cube.ray[r]);
         for (std::uint32_t m = 0; m < terms; ++m)
             scratch.vectors[m * texels + t] += float(mu * fresnelBasisFunction(basis, int(m), mu)) * cube.share[r];
     }
+    return any;
 }
 
 // The kept positions of one sample's m = 0 vector: the fewest largest whose dropped energy is
@@ -144,7 +148,8 @@ EnvironmentTransfer buildEnvironmentTransfer(const RenderMesh& mesh, std::span<c
         RayScratch& own = scratch.local();
         std::vector<float>& vectors = own.vectors;
         for (std::size_t i = range.begin(); i != range.end(); ++i) {
-            occludedVectors(samples[i], scene, directions, M, settings.fresnelBasis, offset, own);
+            if (!occludedVectors(samples[i], scene, directions, M, settings.fresnelBasis, offset, own))
+                continue;  // an open sample: no terms
             for (std::uint32_t m = 0; m < M; ++m)
                 haarForwardCharts(std::span<float>(vectors.data() + m * texels, texels), faces);
             top[i] = keepPositions(std::span<const float>(vectors.data(), texels), budget, kept);
@@ -155,6 +160,12 @@ EnvironmentTransfer buildEnvironmentTransfer(const RenderMesh& mesh, std::span<c
     });
 
     // CSR over (sample * M + m); every m of a sample shares the sample's positions.
+    std::uint64_t entries = 0;
+    for (const SparseVector& kept : top) entries += std::uint64_t(kept.size()) * M;
+    if (entries > std::numeric_limits<std::uint32_t>::max())
+        throw Error("environment visibility: " + std::to_string(entries) +
+                    " terms in all do not fit the sidecar's 32-bit offsets; lower --env-terms, raise --env-error or "
+                    "bake fewer --samples");
     out.offsets.assign(1, 0);
     for (std::size_t i = 0; i < samples.size(); ++i)
         for (std::uint32_t m = 0; m < M; ++m) {

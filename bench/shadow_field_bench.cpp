@@ -9,7 +9,7 @@
 //                light's arrivals, their Fresnel moments, the re-sum of every light's term;
 //                a fixed point light is the other term). Median over the path's moves.
 //   stages       the same arrivals again with each stage timed (ShadowFieldStages, in
-//                thread-ms summed over the workers): setup (frame change, cull, stencil),
+//                thread-ms summed over the workers): setup (frame change, stencil),
 //                interpolation (the weighted sparse maps), cosine (texel cosine integrals
 //                and visibility blocks), visibility (occlusion rays); and what it did:
 //                samples beyond the field, terms, texels, rays

@@ -12,8 +12,10 @@ Imath::V3d directIrradiance(const EmitterScene& emitter, const RayScene* blocker
     const BoundingSphere& b = emitter.bounds();
     const Imath::V3d p = x - at, toCentre = b.centre - p;
     const double d = toCentre.length();
-    const double cosMax = std::sqrt(std::max(0.0, 1.0 - (b.radius / d) * (b.radius / d)));
-    const Imath::V3d axis = toCentre / d;
+    // The cone of directions that can reach the emitter's bounding sphere; from inside it,
+    // every direction (cosMax = -1).
+    const double cosMax = d > b.radius ? std::sqrt(1.0 - (b.radius / d) * (b.radius / d)) : -1.0;
+    const Imath::V3d axis = d > 0.0 ? toCentre / d : Imath::V3d(0, 0, 1);
     const Imath::V3d e1 = (std::abs(axis.x) < 0.9 ? Imath::V3d(1, 0, 0) : Imath::V3d(0, 1, 0)).cross(axis).normalized();
     const Imath::V3d e2 = axis.cross(e1);
     const double solidAngle = 2.0 * kPi * (1.0 - cosMax);

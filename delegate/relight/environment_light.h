@@ -1,9 +1,10 @@
 // The dome light (docs/ARCHITECTURE.md#dome-light, after Ng et al. 2003): a lat-long radiance map,
 // rotated by the light's transform, resampled to the cube map of the asset's environment transfer
-// (in the asset's object space), Haar transformed per face, and dotted with every sample's baked
-// transport vectors: E_m(x_i) = <T_{i,m}, L> (environment_vectors.h). Rotating the dome or the mesh
-// only re-projects the map. The baked visibility is the asset's own (self) occlusion: other meshes
-// do not shadow a dome.
+// (in the asset's object space); from it the dome's unoccluded integral at every normal
+// (dome_convolution.h) less the product of the Haar-transformed map with every sample's baked
+// occluded residual: E_m(x_i) = U_m(n_i) - <O_{i,m}, L> (environment_vectors.h). Rotating the
+// dome or the mesh re-projects the map and sums U again, without rays. The baked visibility is
+// the asset's own (self) occlusion: other meshes do not shadow a dome.
 //
 // Orientation (UsdLux DomeLight, which follows OpenEXR's latitude-longitude maps; Poly
 // Haven's .hdr maps are authored for it): +Y is up; the image's horizontal coordinate

@@ -185,15 +185,12 @@ void EnvironmentVectors::addRows(const Index* positions, const float* radiance, 
 
 void EnvironmentVectors::addDome(std::vector<float> radiance, std::span<const SurfaceSample> samples,
                                  IrradianceMoments& moments) const {
-    if (samples.size() != this->samples())
-        throw Error("dome light: the environment transfer has " + count(this->samples()) + " samples, the asset " +
-                    count(samples.size()));
+    if (samples.size() != this->samples() || moments.terms != terms_ || moments.samples != this->samples())
+        throw Error("dome light: the environment transfer has " + count(this->samples()) + " samples x " +
+                    count(terms_) + " Fresnel terms, the asset " + count(samples.size()) + " samples, the irradiance " +
+                    count(moments.samples) + " x " + count(moments.terms));
     const CubeMapLayout cube(faceSize_);
     if (kind_ == EnvironmentVectorKind::Occluded) {
-        if (moments.terms != terms_ || moments.samples != samples.size())
-            throw Error("dome light: the environment transfer has " + count(samples.size()) + " samples x " +
-                        count(terms_) + " Fresnel terms, the irradiance " + count(moments.samples) + " x " +
-                        count(moments.terms));
         const DomeConvolution open(cube, radiance, terms_, basis_);
         tbb::parallel_for(tbb::blocked_range<std::size_t>(0, samples.size(), kSamplesPerTask), [&](const auto& range) {
             for (std::size_t i = range.begin(); i != range.end(); ++i) open.add(samples[i].normal, moments.sample(i));

@@ -9,7 +9,7 @@
 namespace opal {
 
 struct ShadowFieldStages {
-    // setup: the sample into the light's frame, the cull and the stencil; interpolation:
+    // setup: the sample into the light's frame and the stencil; interpolation:
     // the stencil's weighted sparse maps summed; cosine: clamp, texel cosine integrals and
     // visibility blocks; visibility: the occlusion rays; far field: the samples beyond the
     // outer sphere (a point light, its one ray included).
