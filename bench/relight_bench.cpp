@@ -31,6 +31,7 @@
 #include "bench/cpu_time.h"
 #include "bench/error_time_plot.h"
 #include "bench/relight_reference.h"
+#include "bench/median.h"
 #include "bench/memory_bandwidth.h"
 #include "bench/relight_scene.h"
 #include "bench/shared_assets.h"
@@ -122,12 +123,7 @@ double loadAverage() {
 struct Series {
     std::vector<double> ms;
 
-    double median() const {
-        std::vector<double> v = ms;
-        std::sort(v.begin(), v.end());
-        const std::size_t n = v.size();
-        return n == 0 ? 0.0 : n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-    }
+    double median() const { return bench::median(ms); }
     double min() const { return ms.empty() ? 0.0 : *std::min_element(ms.begin(), ms.end()); }
     double max() const { return ms.empty() ? 0.0 : *std::max_element(ms.begin(), ms.end()); }
 };

@@ -13,6 +13,7 @@
 #include "bake/chart_parameterization.h"
 #include "bake/sample_count.h"
 #include "bake/transfer_row.h"
+#include "bench/median.h"
 #include "bench/output_folder.h"
 #include "bench/subcommand.h"
 #include "schema/scatter/profile_basis.h"
@@ -166,12 +167,6 @@ double cpuSecondsOf(F&& f) {
     const double start = threadSeconds();
     f();
     return threadSeconds() - start;
-}
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    const std::size_t m = v.size() / 2;
-    return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
 }
 
 // Per-row seconds of one stage (all K), reference and new, on the same rows.
