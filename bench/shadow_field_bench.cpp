@@ -297,6 +297,7 @@ Json countsJson(const StageSeries& st) {
     };
     return {{"samples", countMedian(st, [](const ShadowFieldStages& c) { return double(c.samples); })},
             {"beyond", countMedian(st, [](const ShadowFieldStages& c) { return double(c.beyond); })},
+            {"facing_away", countMedian(st, [](const ShadowFieldStages& c) { return double(c.facingAway); })},
             {"terms_per_sample", perSample(&ShadowFieldStages::terms)},
             {"texels_per_sample", perSample(&ShadowFieldStages::texels)},
             {"rays_per_sample", perSample(&ShadowFieldStages::rays)},
@@ -323,9 +324,9 @@ void printSubject(const std::string& label, const MoveSeries& m, const StageSeri
         std::printf(" %s %.1f (%.0f%%)", name, median(*series), 100.0 * median(*series) / total);
     std::printf("\n");
     const Json c = countsJson(st);
-    std::printf("  per move: %.0f samples, %.0f beyond the field; per sample %.0f terms, %.0f texels, %.2f rays (%.2f "
-                "blocked)\n",
-                c["samples"].get<double>(), c["beyond"].get<double>(),
+    std::printf("  per move: %.0f samples, %.0f facing away (skipped), %.0f beyond the field; per sample %.0f terms, "
+                "%.0f texels, %.2f rays (%.2f blocked)\n",
+                c["samples"].get<double>(), c["facing_away"].get<double>(), c["beyond"].get<double>(),
                 c["terms_per_sample"].get<double>(), c["texels_per_sample"].get<double>(),
                 c["rays_per_sample"].get<double>(), c["blocked_per_sample"].get<double>());
     std::printf("  moved back home: moments %s\n", back ? "identical bit for bit" : "DIFFER");

@@ -286,6 +286,13 @@ LightArrival ShadowFieldLight::arrivalInField(const Imath::V3d& x, const Imath::
     return {float(mu), Imath::V3f(perp)};
 }
 
+// Exact, not an estimate: every point of the emitter's bounding sphere lies behind the
+// sample's tangent plane, so no light arrives with a positive cosine. What the truncated
+// Haar maps would smear onto such a sample is their ringing, not light.
+bool ShadowFieldLight::facesAway(const Imath::V3d& x, const Imath::V3d& n) const {
+    return n.dot(centre_ - x) < -radius_;
+}
+
 // Beyond the outer sphere: the far-field point light, E_perp = I(w) / r^2. Its occlusion ray
 // (toward the emitter's centre, to its bounding sphere) is queued in `rays` for sample
 // `sample`: a chunk's samples trace theirs together, as packets of nearly parallel rays.
@@ -338,6 +345,10 @@ std::vector<LightArrival> ShadowFieldLight::arrivals(const PlacedSamples& sample
         for (std::size_t i = range.begin(); i != range.end(); ++i) {
             StageClock clock(st);
             const Imath::V3d x(samples.positions[i]), normal(samples.normals[i]);
+            if (facesAway(x, normal)) {
+                if (st) ++st->samples, ++st->facingAway;
+                continue;  // result[i] stays {}
+            }
             const bool beyond = (toLight(x) - field_->field.centre).length() > outer;
             if (st) {
                 ++st->samples;

@@ -112,6 +112,7 @@ private:
                                FarRays& rays, std::size_t sample) const;
     void traceFarRays(const RayScene* scene, FarRays& rays, std::vector<LightArrival>& result,
                       ShadowFieldStages* stages) const;
+    bool facesAway(const Imath::V3d& x, const Imath::V3d& n) const;  // world; the emitter wholly behind n
     Imath::V3d toLight(const Imath::V3d& world) const;  // a world point in the light's frame (mm)
     double shadowReach(const Imath::V3d& pointLight, const Imath::V3d& directionLight) const;
 

@@ -16,6 +16,7 @@ struct ShadowFieldStages {
     double setupMs = 0.0, interpolationMs = 0.0, cosineMs = 0.0, visibilityMs = 0.0, farFieldMs = 0.0;
     std::uint64_t samples = 0;
     std::uint64_t beyond = 0;  // beyond the outer sphere: the far-field point light
+    std::uint64_t facingAway = 0;  // the emitter wholly behind the tangent plane: unlit, skipped
     std::uint64_t terms = 0;   // sparse map terms added
     std::uint64_t texels = 0;  // distinct texels touched
     std::uint64_t rays = 0, blocked = 0;
@@ -28,6 +29,7 @@ struct ShadowFieldStages {
         farFieldMs += o.farFieldMs;
         samples += o.samples;
         beyond += o.beyond;
+        facingAway += o.facingAway;
         terms += o.terms;
         texels += o.texels;
         rays += o.rays;
