@@ -14,6 +14,7 @@
 //   dome         the studio HDR dome alone
 // It measures: the exit code is 0 whether or not the targets are met (1 for bad input or a
 // failed bake or render), and a summary line counts the images that meet them.
+#include "bench/accuracy_json.h"
 #include "bench/accuracy_targets.h"
 #include "bench/cached_bake.h"
 #include "bench/image_accuracy.h"
@@ -44,7 +45,6 @@ namespace opal::bench {
 namespace {
 
 namespace fs = std::filesystem;
-using Json = nlohmann::ordered_json;
 
 constexpr int kWidth = 640, kHeight = 360;
 const std::vector<std::string> kMaterials = {"default", "short", "long"};
@@ -183,7 +183,6 @@ Image errorImage(const Render& engine, const Render& reference, const std::vecto
     return image;
 }
 
-Json percentilesJson(const Percentiles& p) { return {{"median", p.median}, {"p95", p.p95}}; }
 Json rgbJson(const Rgb& c) { return Json::array({c[0], c[1], c[2]}); }
 
 Json materialJson(const std::string& name, const Material& m) {
@@ -192,13 +191,6 @@ Json materialJson(const std::string& name, const Material& m) {
             {"sigma_a", rgbJson(m.sigmaA)},
             {"eta", m.eta},
             {"mean_free_path_mm", rgbJson(meanFreePath(m))}};
-}
-
-Json targetsJson(const AccuracyTargets& t) {
-    return {{"relative_rmse", t.relativeRmse},
-            {"luminance_error_p95", t.luminanceP95},
-            {"chromaticity_error_p95", t.chromaticityP95},
-            {"negative_fraction", t.negativeFraction}};
 }
 
 // The table's rows as printed while measuring, printed again whole at the end (bake
@@ -233,19 +225,12 @@ Json measureImage(const Subject& s, const std::string& materialName, const std::
               {"source", s.source},
               {"samples", s.asset->samples.size()},
               {"material", materialJson(materialName, material)},
-              {"case", lightCase},
-              {"pixels", a.pixels},
-              {"measured_pixels", a.measured},
-              {"relative_rmse", a.relativeRmse},
-              {"luminance_error", percentilesJson(a.luminance)},
-              {"darker_half_luminance_error", percentilesJson(a.darkerHalf)},
-              {"chromaticity_error", percentilesJson(a.chromaticity)},
-              {"negative_fraction", a.negativeFraction},
-              {"deepest_negative", a.deepestNegative},
-              {"engine_zeroed_values", engine.totals.projectedValues},
+              {"case", lightCase}};
+    j.update(accuracyJson(a));
+    j.update(Json{{"engine_zeroed_values", engine.totals.projectedValues},
               {"engine_deepest_zeroed", engine.totals.deepestProjected},
               {"pass", missed.empty()},
-              {"missed", missed}};
+              {"missed", missed}});
     if (!options.outputDir.empty()) {
         const fs::path png = options.outputDir / (s.label + "-" + std::to_string(s.asset->samples.size()) + "-" +
                                                   materialName + "-" + lightCase + "-error.png");

@@ -21,7 +21,7 @@ int main(int argc, char** argv) {
     const std::array subcommands = {opal::bench::basisSubcommand(), opal::bench::bakeSubcommand(),
                                     opal::bench::relightSubcommand(), opal::bench::transferRowSubcommand(),
                                     opal::bench::accuracySubcommand(),
-                                    opal::bench::shadowFieldSubcommand()};
+                                    opal::bench::shadowFieldSubcommand(), opal::bench::compareSubcommand()};
     if (argc < 2) {
         printUsage(stderr, subcommands);
         return 2;

@@ -21,5 +21,6 @@ Subcommand relightSubcommand();
 Subcommand transferRowSubcommand();
 Subcommand accuracySubcommand();
 Subcommand shadowFieldSubcommand();
+Subcommand compareSubcommand();
 
 }  // namespace opal::bench
