@@ -175,7 +175,9 @@ TEST(AnalyticLight, ColorTemperatureTintsTheLightAtUnitLuminance) {
         EXPECT_NEAR(xyz.y / sum, expected.y, 1e-5) << kelvin;
         const double y = kAcescgLuminance.dot(Imath::V3d(e)), whiteY = kAcescgLuminance.dot(Imath::V3d(white));
         EXPECT_NEAR(y, whiteY, 1e-5 * whiteY) << kelvin;
-        if (kelvin < 3000.0) EXPECT_GT(e.x, 2.0f * e.z) << "a warm light is red-orange at " << kelvin;
+        if (kelvin < 3000.0) {
+            EXPECT_GT(e.x, 2.0f * e.z) << "a warm light is red-orange at " << kelvin;
+        }
     }
     desc.colorTemperature = 100.0;
     try {
