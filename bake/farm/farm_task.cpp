@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <optional>
 #include <sstream>
@@ -46,26 +47,45 @@ void passCrashPoints(FarmStage stage, std::uint32_t index) {
 }
 
 // rows-I.task: section k * N + c holds T_k's entries of rows shard I in column block c,
-// as (o, j, value) arrays in row order, zeros dropped.
-// Written straight from the rows, in exactly the bytes it needs: the rows task's memory
-// beyond its rows is one section.
-std::string rowsSection(const Step1Rows& rows, std::size_t firstRow, std::size_t columnBegin, std::size_t columnEnd) {
-    const auto forEachKept = [&](auto&& visit) {
-        forEachRowEntry(rows, firstRow, [&](std::uint32_t row, std::uint32_t column, float value) {
-            if (value != 0.0f && column >= columnBegin && column < columnEnd) visit(row, column, value);
-        });
+// as (o, j, value) arrays in row order, zeros dropped:
+//   u64 count | o[count] (u32) | u64 count | j[count] (u32) | u64 count | value[count] (f32)
+// One k's N sections are made together, in two passes over its rows (count each block's
+// entries, then place them) rather than four passes per block: the rows task's memory
+// beyond its rows is one k's entries, 12 bytes each.
+std::vector<std::string> rowsSections(const TaskContext& c, const Step1Rows& rows, std::size_t firstRow) {
+    const std::uint32_t blocks = c.spec.shards;
+    std::vector<std::uint32_t> blockOf(c.plan.n());
+    for (std::uint32_t b = 0; b < blocks; ++b) {
+        const auto [columnBegin, columnEnd] = c.shard(b);
+        std::fill(blockOf.begin() + std::ptrdiff_t(columnBegin), blockOf.begin() + std::ptrdiff_t(columnEnd), b);
+    }
+    std::vector<std::uint64_t> count(blocks, 0);
+    forEachRowEntry(rows, firstRow, [&](std::uint32_t, std::uint32_t j, float v) {
+        if (v != 0.0f) ++count[blockOf[j]];
+    });
+    std::vector<std::string> sections(blocks);
+    struct Cursor {
+        char *o, *j, *v;
     };
-    std::uint64_t count = 0;
-    forEachKept([&](std::uint32_t, std::uint32_t, float) { ++count; });
-    SectionWriter w;
-    w.reserve(3 * sizeof(std::uint64_t) + count * 12);
-    w.u64(count);
-    forEachKept([&](std::uint32_t o, std::uint32_t, float) { w.element(o); });
-    w.u64(count);
-    forEachKept([&](std::uint32_t, std::uint32_t j, float) { w.element(j); });
-    w.u64(count);
-    forEachKept([&](std::uint32_t, std::uint32_t, float v) { w.element(v); });
-    return w.take();
+    std::vector<Cursor> at(blocks);
+    for (std::uint32_t b = 0; b < blocks; ++b) {
+        const std::uint64_t n = count[b];
+        sections[b].resize(3 * sizeof(std::uint64_t) + n * 12);
+        char* const base = sections[b].data();
+        for (std::uint64_t offset : {std::uint64_t(0), 8 + 4 * n, 16 + 8 * n}) std::memcpy(base + offset, &n, 8);
+        at[b] = {base + 8, base + 16 + 4 * n, base + 24 + 8 * n};
+    }
+    forEachRowEntry(rows, firstRow, [&](std::uint32_t o, std::uint32_t j, float v) {
+        if (v == 0.0f) return;
+        Cursor& cursor = at[blockOf[j]];
+        std::memcpy(cursor.o, &o, 4);
+        std::memcpy(cursor.j, &j, 4);
+        std::memcpy(cursor.v, &v, 4);
+        cursor.o += 4;
+        cursor.j += 4;
+        cursor.v += 4;
+    });
+    return sections;
 }
 
 void runRows(const TaskContext& c, std::uint32_t index, const CancelToken& cancel) {
@@ -77,10 +97,7 @@ void runRows(const TaskContext& c, std::uint32_t index, const CancelToken& cance
     // Section by section, each k's rows released once written: the rows are the peak.
     TaskFileWriter file(c.folder.output(FarmStage::Rows, index), rows.size() * c.spec.shards);
     for (Step1Rows& k : rows) {
-        for (std::uint32_t block = 0; block < c.spec.shards; ++block) {
-            const auto [columnBegin, columnEnd] = c.shard(block);
-            file.add(rowsSection(k, begin, columnBegin, columnEnd));
-        }
+        for (const std::string& section : rowsSections(c, k, begin)) file.add(section);
         k = Step1Rows{};
     }
     passCrashPoints(FarmStage::Rows, index);
