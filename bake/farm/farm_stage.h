@@ -3,10 +3,9 @@
 //   rows     N tasks  step 1 for a range of output rows              -> rows-I.task
 //                     (one section per k and column block)
 //   columns  N tasks  a block of columns gathered from every rows     -> columns-I.task
-//                     shard, step 2's energy histogram over them      (the columns per k,
-//                                                                      then the histogram)
-//   keep     N tasks  the threshold from all histograms; the block's  -> kept-I.task
-//                     kept 9/7 coefficients
+//                     shard, step 2's energy histogram over them      (the histogram)
+//   keep     N tasks  the threshold from all histograms; the block    -> kept-I.task
+//                     gathered again, its kept 9/7 coefficients
 //   merge    1 task   the matrices assembled block by block, environment visibility,
 //                     the transfer error, the asset written (asset_stem.h); the folder removed
 // The folder also holds spec.task (what to bake, written by the submitting opal-bake),

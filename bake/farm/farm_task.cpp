@@ -132,46 +132,15 @@ Step1Columns gatherBlock(const TaskContext& c, std::uint32_t index, std::size_t 
     });
 }
 
-std::string columnsSection(const Step1Columns& columns) {
-    SectionWriter w;
-    w.reserve(4 * sizeof(std::uint64_t) + columns.offsets.size() * sizeof(std::uint64_t) + columns.row.size() * 8);
-    w.u64(columns.first);
-    w.array(columns.offsets);
-    w.array(columns.row);
-    w.array(columns.value);
-    return w.take();
-}
-
-Step1Columns readColumns(const TaskContext& c, std::uint32_t index, std::size_t k) {
-    SectionReader r = TaskFile(c.folder.output(FarmStage::Columns, index)).section(k);
-    Step1Columns columns;
-    columns.first = r.u64("first column");
-    columns.offsets = r.array<std::uint64_t>("column offsets");
-    columns.row = r.array<std::uint32_t>("rows");
-    columns.value = r.array<float>("values");
-    r.expectEnd();
-    const auto [begin, end] = c.shard(index);
-    if (columns.first != begin || columns.offsets.size() != end - begin + 1 || columns.offsets.front() != 0 ||
-        columns.offsets.back() != columns.row.size() || columns.value.size() != columns.row.size())
-        r.fail("columns", "do not describe block " + std::to_string(begin) + ".." + std::to_string(end));
-    for (std::size_t j = 0; j + 1 < columns.offsets.size(); ++j)
-        if (columns.offsets[j] > columns.offsets[j + 1]) r.fail("column offsets", "decrease");
-    for (std::uint32_t o : columns.row)
-        if (o >= c.plan.n()) r.fail("rows", "name an output past the matrix");
-    return columns;
-}
-
 void runColumns(const TaskContext& c, std::uint32_t index, const CancelToken& cancel) {
     const StageScope stage(nullptr, "", 0);
     EnergyHistogram histogram;
-    // Sections 0 .. K-1: the block's columns of each T_k, one k held at a time; K: the
-    // histogram.
-    TaskFileWriter file(c.folder.output(FarmStage::Columns, index), c.plan.K() + 1);
-    for (std::size_t k = 0; k < c.plan.K(); ++k) {
-        const Step1Columns columns = gatherBlock(c, index, k);
-        histogram.add(histogramOfColumns(columns, c.plan.layout, c.weights, k, stage, cancel));
-        file.add(columnsSection(columns));
-    }
+    // One section: the histogram. The block's columns are not written: the keep task
+    // gathers them again from the rows shards, which costs less than writing and reading
+    // them back (the whole step-1 matrix, once more, across the columns files).
+    for (std::size_t k = 0; k < c.plan.K(); ++k)
+        histogram.add(histogramOfColumns(gatherBlock(c, index, k), c.plan.layout, c.weights, k, stage, cancel));
+    TaskFileWriter file(c.folder.output(FarmStage::Columns, index), 1);
     SectionWriter w;
     w.array(histogram.words());
     file.add(w.take());
@@ -183,7 +152,7 @@ void runColumns(const TaskContext& c, std::uint32_t index, const CancelToken& ca
 EnergyHistogram allEnergies(const TaskContext& c) {
     EnergyHistogram all;
     for (std::uint32_t s = 0; s < c.spec.shards; ++s) {
-        SectionReader r = TaskFile(c.folder.output(FarmStage::Columns, s)).section(c.plan.K());
+        SectionReader r = TaskFile(c.folder.output(FarmStage::Columns, s)).section(0);
         all.add(EnergyHistogram::fromWords(r.array<std::uint64_t>("energy histogram")));
         r.expectEnd();
     }
@@ -196,7 +165,7 @@ void runKeep(const TaskContext& c, std::uint32_t index, const CancelToken& cance
     TaskFileWriter file(c.folder.output(FarmStage::Keep, index), c.plan.K());
     for (std::size_t k = 0; k < c.plan.K(); ++k) {
         const KeptColumns kept =
-            keptColumns(readColumns(c, index, k), c.plan.layout, c.weights, k, minBin, stage, cancel);
+            keptColumns(gatherBlock(c, index, k), c.plan.layout, c.weights, k, minBin, stage, cancel);
         std::vector<std::uint32_t> counts, p;
         std::vector<float> values;
         for (const auto& column : kept.columns) {

@@ -11,7 +11,9 @@ namespace opal {
 namespace {
 
 constexpr std::string_view kMagic = "OPALTASK";
-constexpr std::uint32_t kVersion = 2;  // 2: the environment error in the options and the asset
+// 2: the environment error in the options and the asset; 3: columns files hold the
+// histogram alone
+constexpr std::uint32_t kVersion = 3;
 constexpr std::uint32_t kMaxSections = 1u << 20;
 
 std::uint64_t checksum(std::string_view bytes) { return xxh64(std::as_bytes(std::span(bytes.data(), bytes.size()))); }
