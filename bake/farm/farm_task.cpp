@@ -107,17 +107,20 @@ void runRows(const TaskContext& c, std::uint32_t index, const CancelToken& cance
 // T_k's columns of block `index`, from every rows shard in row order.
 Step1Columns gatherBlock(const TaskContext& c, std::uint32_t index, std::size_t k) {
     const auto [begin, end] = c.shard(index);
-    // T_k's entries of the block from every rows shard, read once (the block's entries and
-    // then its columns are what the task holds).
+    // T_k's entries of the block from every rows shard, read once and visited in place
+    // (the sections' bytes and then the block's columns are what the task holds).
     struct Entries {
-        std::vector<std::uint32_t> o, j;
-        std::vector<float> v;
+        SectionArray<std::uint32_t> o, j;
+        SectionArray<float> v;
     };
+    std::vector<SectionReader> sections;
+    sections.reserve(c.spec.shards);  // never moved once viewed
     std::vector<Entries> pieces;
     for (std::uint32_t s = 0; s < c.spec.shards; ++s) {
-        SectionReader r = TaskFile(c.folder.output(FarmStage::Rows, s)).section(k * c.spec.shards + index);
-        Entries& e = pieces.emplace_back(Entries{r.array<std::uint32_t>("rows"), r.array<std::uint32_t>("columns"),
-                                                 r.array<float>("values")});
+        SectionReader& r =
+            sections.emplace_back(TaskFile(c.folder.output(FarmStage::Rows, s)).section(k * c.spec.shards + index));
+        const Entries& e = pieces.emplace_back(
+            Entries{r.view<std::uint32_t>("rows"), r.view<std::uint32_t>("columns"), r.view<float>("values")});
         r.expectEnd();
         if (e.j.size() != e.o.size() || e.v.size() != e.o.size())
             r.fail("entries", "differ in count (" + std::to_string(e.o.size()) + " rows, " +

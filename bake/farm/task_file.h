@@ -62,6 +62,25 @@ private:
 
 // Reads one section's fields in the order they were written; running off its end or an
 // array longer than what is left throws opal::Error naming `context` and the field.
+// The values of an array in a section, read in place (each through memcpy: the bytes
+// need not be aligned for T), for arrays too large to copy out.
+template <class T>
+class SectionArray {
+public:
+    SectionArray() = default;
+    SectionArray(const char* data, std::size_t count) : data_(data), count_(count) {}
+    std::size_t size() const { return count_; }
+    T operator[](std::size_t i) const {
+        T v;
+        std::memcpy(&v, data_ + i * sizeof(T), sizeof v);
+        return v;
+    }
+
+private:
+    const char* data_ = nullptr;
+    std::size_t count_ = 0;
+};
+
 class SectionReader {
 public:
     SectionReader(std::string bytes, std::string context) : bytes_(std::move(bytes)), context_(std::move(context)) {}
@@ -75,6 +94,16 @@ public:
         if (count > (bytes_.size() - at_) / sizeof(T)) fail(what, "holds " + std::to_string(count) + " values");
         std::vector<T> values(count);
         std::memcpy(static_cast<void*>(values.data()), bytes_.data() + at_, count * sizeof(T));
+        at_ += count * sizeof(T);
+        return values;
+    }
+    // The next array in place: valid while this reader lives and is not moved.
+    template <class T>
+    SectionArray<T> view(std::string_view what) {
+        static_assert(std::is_arithmetic_v<T>);
+        const std::uint64_t count = u64(what);
+        if (count > (bytes_.size() - at_) / sizeof(T)) fail(what, "holds " + std::to_string(count) + " values");
+        const SectionArray<T> values(bytes_.data() + at_, count);
         at_ += count * sizeof(T);
         return values;
     }

@@ -1,0 +1,58 @@
+// Farm task files (bake/farm/task_file.h): arrays read back by copy and in place are the
+// values written, at any alignment the fields before them leave, and a count that runs
+// past the section is refused naming the file, the section and the field.
+#include "bake/farm/task_file.h"
+#include "schema/error.h"
+
+#include "tests/bake/bake_test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace opal {
+namespace {
+
+TEST(TaskFile, ArraysReadInPlaceAreTheValuesWrittenAtAnyAlignment) {
+    const test::ScratchDir dir;
+    const std::vector<std::uint32_t> odd = {7, 8, 9};  // leaves the next array 4 bytes off 8
+    const std::vector<std::uint64_t> wide = {1ull << 40, 3, 0xffffffffffffffffull};
+    const std::vector<float> values = {0.5f, -2.25f, 1e-30f, 3.0f};
+    SectionWriter w;
+    w.array(odd);
+    w.array(wide);
+    w.array(values);
+    writeTaskFile(dir / "a.task", std::vector<std::string>{w.take()});
+
+    SectionReader r = TaskFile(dir / "a.task").section(0);
+    EXPECT_EQ(r.array<std::uint32_t>("odd"), odd);
+    const SectionArray<std::uint64_t> w2 = r.view<std::uint64_t>("wide");
+    const SectionArray<float> v2 = r.view<float>("values");
+    r.expectEnd();
+    ASSERT_EQ(w2.size(), wide.size());
+    for (std::size_t i = 0; i < wide.size(); ++i) EXPECT_EQ(w2[i], wide[i]);
+    ASSERT_EQ(v2.size(), values.size());
+    for (std::size_t i = 0; i < values.size(); ++i) EXPECT_EQ(v2[i], values[i]);
+}
+
+TEST(TaskFile, AnArrayLongerThanItsSectionIsRefusedByName) {
+    const test::ScratchDir dir;
+    SectionWriter w;
+    w.u64(1000);  // a count with nothing after it
+    w.u32(5);
+    writeTaskFile(dir / "a.task", std::vector<std::string>{w.take()});
+    SectionReader r = TaskFile(dir / "a.task").section(0);
+    try {
+        (void)r.view<float>("values");
+        FAIL() << "an array past the section was read";
+    } catch (const Error& e) {
+        const std::string message = e.what();
+        EXPECT_NE(message.find("a.task: section 0"), std::string::npos) << message;
+        EXPECT_NE(message.find("values holds 1000 values"), std::string::npos) << message;
+    }
+}
+
+}  // namespace
+}  // namespace opal
