@@ -149,12 +149,14 @@ struct ShadowFieldLight::Texels {
 
 namespace {
 constexpr std::size_t kNoRay = std::numeric_limits<std::size_t>::max();
+constexpr double kFaintBlock = 0.02;
 }  // namespace
 
 struct ShadowFieldLight::LitBlock {
     Imath::V3d e{0.0};
     Imath::V3d direction{0.0};
-    std::size_t ray = kNoRay;  // its occlusion ray, or kNoRay (no scene, or the sample inside the sphere)
+    std::size_t ray = kNoRay;  // its occlusion ray, or kNoRay (no scene, faint, or the sample inside the sphere)
+    bool faint = false;
 };
 
 // A chunk's far-field occlusion rays and the samples they belong to.
@@ -251,7 +253,10 @@ LightArrival ShadowFieldLight::arrivalInField(const Imath::V3d& x, const Imath::
     }
     clock.lap(st.cosineMs);
     // The lit blocks in order, and one occlusion ray each: rays from one origin toward one
-    // emitter, traced together as coherent packets.
+    // emitter, traced together as coherent packets. A block with less than kFaintBlock of
+    // the sample's light casts none: it takes the visible fraction of the traced blocks'.
+    double allLight = 0.0;
+    for (std::size_t t = 0; t < litBlocks; ++t) allLight += channelSum(s.blocks[s.touchedBlocks[t]].e);
     std::size_t lit = 0, rays = 0;
     const Imath::V3f origin = Imath::V3f(x + n * double(offset));
     for (std::size_t t = 0; t < litBlocks; ++t) {
@@ -260,24 +265,36 @@ LightArrival ShadowFieldLight::arrivalInField(const Imath::V3d& x, const Imath::
         const Texels block = std::exchange(s.blocks[b], Texels{});
         if (channelSum(block.e) <= 0.0) continue;
         const Imath::V3d d = block.direction.normalized();
-        const double reach = scene ? shadowReach(p, d) * scale_ * (1.0 - 1e-4) : 0.0;
-        s.lit[lit] = {block.e, d, reach > 0.0 ? rays : kNoRay};
+        const bool faint = channelSum(block.e) < kFaintBlock * allLight;
+        const double reach = scene && !faint ? shadowReach(p, d) * scale_ * (1.0 - 1e-4) : 0.0;
+        s.lit[lit] = {block.e, d, reach > 0.0 ? rays : kNoRay, faint};
         if (reach > 0.0) s.rays[rays++] = Ray(origin, Imath::V3f(d * rotation_), 0.0f, float(reach));
         ++lit;
     }
     if (rays) scene->occludedCoherent({s.rays.data(), rays}, {s.blocked.data(), rays});
     st.rays += rays;
-    Imath::V3d total(0.0);
-    double cosineSum = 0.0;
+    Imath::V3d total(0.0), faintTotal(0.0);
+    double cosineSum = 0.0, faintCosineSum = 0.0, traced = 0.0, tracedVisible = 0.0;
     for (std::size_t t = 0; t < lit; ++t) {
         const LitBlock& block = s.lit[t];
+        const double e = channelSum(block.e), cosine = e * std::max(0.0, block.direction.dot(nl));
+        if (block.faint) {
+            faintTotal += block.e;
+            faintCosineSum += cosine;
+            continue;
+        }
+        traced += e;
         if (block.ray != kNoRay && s.blocked[block.ray]) {
             ++st.blocked;
             continue;
         }
+        tracedVisible += e;
         total += block.e;
-        cosineSum += channelSum(block.e) * std::max(0.0, block.direction.dot(nl));
+        cosineSum += cosine;
     }
+    const double visible = traced > 0.0 ? tracedVisible / traced : 1.0;
+    total += faintTotal * visible;
+    cosineSum += faintCosineSum * visible;
     clock.lap(st.visibilityMs);
     const double sum = channelSum(total);
     if (!(sum > 0.0)) return {};
