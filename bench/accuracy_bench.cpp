@@ -17,6 +17,7 @@
 #include "bench/accuracy_json.h"
 #include "bench/accuracy_targets.h"
 #include "bench/cached_bake.h"
+#include "bench/error_image.h"
 #include "bench/image_accuracy.h"
 #include "bench/mean_free_path_ends.h"
 #include "bench/relight_scene.h"
@@ -163,26 +164,6 @@ Render render(const std::shared_ptr<const TranslucentAsset>& asset, const Materi
             delegate.totals()};
 }
 
-// |Y(a) - Y(b)| / Y(b) as grey, 0 -> black and 5% or more -> white; pixels off the asset blue.
-Image errorImage(const Render& engine, const Render& reference, const std::vector<std::uint8_t>& mask) {
-    Image image(kWidth, kHeight, 3);
-    for (std::size_t p = 0; p < mask.size(); ++p) {
-        float* out = image.pixels().data() + 3 * p;
-        if (!mask[p]) {
-            out[0] = 0.05f, out[1] = 0.1f, out[2] = 0.3f;
-            continue;
-        }
-        double ya = 0.0, yb = 0.0;
-        for (int c = 0; c < 3; ++c) {
-            ya += kAcescgLuminance[c] * engine.subsurface[3 * p + c];
-            yb += kAcescgLuminance[c] * reference.subsurface[3 * p + c];
-        }
-        const float grey = yb > 0.0 ? float(std::min(1.0, std::abs(ya - yb) / yb / 0.05)) : 1.0f;
-        out[0] = out[1] = out[2] = grey;
-    }
-    return image;
-}
-
 Json rgbJson(const Rgb& c) { return Json::array({c[0], c[1], c[2]}); }
 
 Json materialJson(const std::string& name, const Material& m) {
@@ -234,7 +215,7 @@ Json measureImage(const Subject& s, const std::string& materialName, const std::
     if (!options.outputDir.empty()) {
         const fs::path png = options.outputDir / (s.label + "-" + std::to_string(s.asset->samples.size()) + "-" +
                                                   materialName + "-" + lightCase + "-error.png");
-        writePreview(png, errorImage(engine, reference, mask));
+        writePreview(png, luminanceErrorImage(kWidth, kHeight, engine.subsurface, reference.subsurface, mask));
         j["error_image"] = png.string();
     }
     return j;

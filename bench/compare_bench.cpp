@@ -7,20 +7,24 @@
 //                    `color` adds the specular and emission, which both modes share)
 //   --prim-id N      the pixels compared: those whose primId is N in both images
 //                    (repeatable; default 0, the scene's first translucent prim)
+//   --error-image P  the per-pixel luminance error as a PNG (bench/error_image.h)
 //
 // Prints the figures against the targets and, with --json, writes them. Exit 0 when
 // measured (whether or not the targets are met), 1 on an unreadable or mismatched input,
 // naming the file and what is wrong.
 #include "bench/accuracy_json.h"
 #include "bench/accuracy_targets.h"
+#include "bench/error_image.h"
 #include "bench/exr_layer.h"
 #include "bench/image_accuracy.h"
 #include "bench/subcommand.h"
 
+#include "delegate/output/preview_writer.h"
 #include "schema/error.h"
 #include "schema/usd/atomic_file.h"
 
 #include <CLI/CLI.hpp>
+#include <cstdint>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -30,13 +34,14 @@ namespace opal::bench {
 namespace {
 
 struct Options {
-    std::string engine, reference, layer = "subsurface", jsonFile;
+    std::string engine, reference, layer = "subsurface", jsonFile, errorImage;
     std::vector<int> primIds = {0};
 };
 
 int run(const Options& o) {
     const ExrLayer engine = readExrLayer(o.engine, o.layer), reference = readExrLayer(o.reference, o.layer);
-    const ImageAccuracy a = measureAccuracy(engine.rgb, reference.rgb, primMask(engine, reference, o.primIds));  // sizes checked
+    const std::vector<std::uint8_t> mask = primMask(engine, reference, o.primIds);  // sizes checked
+    const ImageAccuracy a = measureAccuracy(engine.rgb, reference.rgb, mask);
     const AccuracyTargets targets;
     const std::vector<std::string> missed = missedTargets(a, targets);
     std::printf("opal-bench compare: %s against %s, layer %s, %zu pixels (%zu bright enough for per-pixel figures)\n",
@@ -49,6 +54,10 @@ int run(const Options& o) {
     std::printf("  negative pixels %.4f (deepest %.2e of the p99 luminance)\n", a.negativeFraction, a.deepestNegative);
     std::printf("  targets: %s\n", missed.empty() ? "all met" : "MISSED");
     for (const std::string& m : missed) std::printf("    %s\n", m.c_str());
+    if (!o.errorImage.empty()) {
+        writePreview(o.errorImage, luminanceErrorImage(engine.width, engine.height, engine.rgb, reference.rgb, mask));
+        std::printf("wrote %s\n", o.errorImage.c_str());
+    }
     if (!o.jsonFile.empty()) {
         Json j = {{"engine", o.engine}, {"reference", o.reference}, {"layer", o.layer}, {"prim_ids", o.primIds}};
         j.update(accuracyJson(a));
@@ -71,6 +80,8 @@ int runCompare(int argc, char** argv) {
     app.add_option("--prim-id", o.primIds, "compare the pixels of this primId (repeatable)")
         ->check(CLI::NonNegativeNumber)
         ->capture_default_str();
+    app.add_option("--error-image", o.errorImage,
+                   "also write the per-pixel luminance error as a PNG (black 0, white 5% or more; unmeasured blue)");
     app.add_option("--json", o.jsonFile, "also write the figures as JSON to this file");
     CLI11_PARSE(app, argc, argv);
     try {
