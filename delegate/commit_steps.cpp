@@ -1,5 +1,6 @@
 #include "delegate/commit_steps.h"
 
+#include "delegate/hd/light_types.h"
 #include "schema/error.h"
 
 #include <chrono>
@@ -44,13 +45,9 @@ BoundMaterial resolveMaterial(const TranslucentMesh& mesh, const MaterialPrims& 
 
 }  // namespace
 
-const std::vector<hd::Token>& lightTypes() {
-    static const std::vector<hd::Token> types = {hd::PrimType::SphereLight, hd::PrimType::DistantLight,
-                                                 hd::PrimType::DomeLight, hd::PrimType::ShadowFieldLight};
-    return types;
+std::vector<OpalLight*> collectLightPrims(const hd::RenderIndex& index) {
+    return sprimsOf<OpalLight>(index, hd::lightPrimTypes());
 }
-
-std::vector<OpalLight*> collectLightPrims(const hd::RenderIndex& index) { return sprimsOf<OpalLight>(index, lightTypes()); }
 
 LightSources collectLights(const hd::RenderIndex& index, Frame& frame) {
     LightSources lights;
