@@ -93,7 +93,7 @@ private:
     FresnelBasis basis_ = FresnelBasis::Legendre;
     FresnelResponse response_;
     PlacedSamples placed_;
-    std::unique_ptr<const EnvironmentVectors> environment_;  // built with the first dome
+    std::unique_ptr<EnvironmentVectors> environment_;        // built with the first dome
     std::unique_ptr<const EnvironmentReference> reference_;   // built with the first referenceIrradiance
     std::map<hd::SdfPath, Contribution> lights_;
     IrradianceMoments total_;
