@@ -182,10 +182,10 @@ void recordSync(Session& s, CaseResult& result) {
     result.cpu.ms.push_back(processCpuMilliseconds() - cpu);
     const CommitStats& c = s.delegate.lastCommit();
     result.times.ms.push_back(wall);
-    const double parts[] = {c.irradianceMs, c.productsMs, c.materialMs,
+    const double parts[] = {c.irradianceMs, c.lightMomentsMs, c.productsMs, c.materialMs,
                             wall - c.irradianceMs - c.productsMs - c.materialMs};
     if (result.breakdown.empty())
-        for (const char* name : {"irradiance", "products", "material", "other"})
+        for (const char* name : {"irradiance", "irradiance_moments", "products", "material", "other"})
             result.breakdown.push_back({name, {}});
     for (std::size_t i = 0; i < result.breakdown.size(); ++i) result.breakdown[i].second.ms.push_back(parts[i]);
 }
@@ -440,7 +440,8 @@ void printTable(const std::vector<CaseResult>& cases, double bandwidth) {
 
 void printBreakdown(const std::vector<CaseResult>& cases) {
     std::printf("\nwhere the time goes (medians of each part over the repeats, ms; the delegate's CommitStats: "
-                "irradiance = E_m of the changed light, products = y_k, material = s_k + inverse 9/7 + vertices, "
+                "irradiance = E_m of the changed light (irradiance_moments: the part that sums its moments; a dome's "
+                "map on the cube and the baked vectors' sums), products = y_k, material = s_k + inverse 9/7 + vertices, "
                 "other = prim sync + commit bookkeeping; frame: image_formation = renderFrame, buffers = allocation + "
                 "AOV checks):\n");
     for (const CaseResult& c : cases) {

@@ -266,14 +266,12 @@ Accuracy measureAccuracy(const Subject& s, const std::shared_ptr<const LoadedSha
     });
     a.directMs = clock.ms();
     a.directCpuMs = processCpuMilliseconds() - cpu;
-    double error = 0.0, norm = 0.0;
+    std::vector<Imath::V3d> fieldE(direct.size());
     for (std::size_t i = 0; i < direct.size(); ++i) {
-        const Imath::V3d e = Imath::V3d(arrivals[i].irradiance) * double(arrivals[i].cosTheta);
-        error += (e - direct[i]).length2();
-        norm += direct[i].length2();
+        fieldE[i] = Imath::V3d(arrivals[i].irradiance) * double(arrivals[i].cosTheta);
         a.litSamples += direct[i].x + direct[i].y + direct[i].z > 0.0;
     }
-    a.relativeRmse = norm > 0.0 ? std::sqrt(error / norm) : 0.0;
+    a.relativeRmse = relativeRmse(fieldE, direct);
     return a;
 }
 

@@ -1,5 +1,7 @@
 #include "delegate/commit_steps.h"
 
+#include "delegate/hd/light_types.h"
+#include "delegate/hd/mesh_material.h"
 #include "schema/error.h"
 
 #include <chrono>
@@ -19,38 +21,26 @@ std::vector<T*> sprimsOf(const hd::RenderIndex& index, const std::vector<hd::Tok
     return prims;
 }
 
+// hd::meshMaterial, with the material prim's version (0 for the asset's default).
 BoundMaterial resolveMaterial(const TranslucentMesh& mesh, const MaterialPrims& materials) {
-    BoundMaterial bound;
     const hd::SdfPath& path = mesh.desc().material;
-    if (path.empty()) {
-        bound.subsurface = mesh.desc().asset->defaultMaterial;
-        const hd::MaterialDesc defaults;
-        bound.specular = defaults.specular;
-        bound.roughness = defaults.specularRoughness;
-        return bound;
+    const auto it = path.empty() ? materials.end() : materials.find(path);
+    const OpalMaterial* prim = it == materials.end() ? nullptr : it->second;
+    hd::MaterialDesc desc;
+    try {
+        desc = hd::meshMaterial(path, *mesh.desc().asset, prim ? &prim->desc() : nullptr);
+    } catch (const Error& e) {
+        throw Error("translucent mesh '" + mesh.id() + "': " + e.what());
     }
-    const auto it = materials.find(path);
-    if (it == materials.end())
-        throw Error("translucent mesh '" + mesh.id() + "': its material '" + path +
-                    "' is not a material prim of the render index");
-    bound.path = path;
-    bound.version = it->second->version();
-    bound.subsurface = it->second->desc().subsurface;
-    bound.specular = it->second->desc().specular;
-    bound.roughness = it->second->desc().specularRoughness;
-    return bound;
+    return {path, prim ? prim->version() : 0, desc.subsurface, desc.specular, desc.specularRoughness};
 }
 
 
 }  // namespace
 
-const std::vector<hd::Token>& lightTypes() {
-    static const std::vector<hd::Token> types = {hd::PrimType::SphereLight, hd::PrimType::DistantLight,
-                                                 hd::PrimType::DomeLight, hd::PrimType::ShadowFieldLight};
-    return types;
+std::vector<OpalLight*> collectLightPrims(const hd::RenderIndex& index) {
+    return sprimsOf<OpalLight>(index, hd::lightPrimTypes());
 }
-
-std::vector<OpalLight*> collectLightPrims(const hd::RenderIndex& index) { return sprimsOf<OpalLight>(index, lightTypes()); }
 
 LightSources collectLights(const hd::RenderIndex& index, Frame& frame) {
     LightSources lights;

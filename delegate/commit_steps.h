@@ -17,9 +17,6 @@
 
 namespace opal {
 
-// The light prim types Opal's delegate creates.
-const std::vector<hd::Token>& lightTypes();
-
 // Every light prim, and every one that synced once as a LightSource by path, its analytic
 // light or dome also added to `frame` (a failed first sync leaves version 0: such a light
 // is not there yet).

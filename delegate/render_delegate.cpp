@@ -3,6 +3,7 @@
 #include "delegate/camera.h"
 #include "delegate/commit_steps.h"
 #include "delegate/image/camera_view.h"
+#include "delegate/hd/light_types.h"
 #include "delegate/hd/render_index.h"
 #include "delegate/light.h"
 #include "delegate/material_prim.h"
@@ -38,7 +39,7 @@ std::vector<hd::Token> OpalRenderDelegate::supportedRprimTypes() const { return 
 
 std::vector<hd::Token> OpalRenderDelegate::supportedSprimTypes() const {
     std::vector<hd::Token> types = {hd::PrimType::Camera, hd::PrimType::Material};
-    types.insert(types.end(), lightTypes().begin(), lightTypes().end());
+    types.insert(types.end(), hd::lightPrimTypes().begin(), hd::lightPrimTypes().end());
     return types;
 }
 
@@ -52,8 +53,7 @@ std::unique_ptr<hd::Rprim> OpalRenderDelegate::createRprim(const hd::Token& type
 std::unique_ptr<hd::Sprim> OpalRenderDelegate::createSprim(const hd::Token& type, const hd::SdfPath& id) {
     if (type == hd::PrimType::Camera) return std::make_unique<OpalCamera>(id);
     if (type == hd::PrimType::Material) return std::make_unique<OpalMaterial>(id, versions_);
-    for (const hd::Token& light : lightTypes())
-        if (type == light) return std::make_unique<OpalLight>(id, type, textures_, fields_, versions_);
+    if (hd::isLightPrimType(type)) return std::make_unique<OpalLight>(id, type, textures_, fields_, versions_);
     return nullptr;
 }
 

@@ -4,8 +4,7 @@
 // (delegate/CMakeLists.txt, opal_add_renderer_plugin).
 #include "delegate/render_delegate.h"
 #include "plugin/renderer_plugin.h"
-
-#include <embree3/rtcore.h>
+#include "raytrace/embree_device_config.h"
 
 namespace opal {
 
@@ -14,12 +13,7 @@ public:
     std::string displayName() const override { return "Opal"; }
 
     // Opal needs an Embree device (a CPU with SSE2 at least, which Embree checks).
-    bool isSupported() const override {
-        RTCDevice device = rtcNewDevice(nullptr);
-        if (!device) return false;
-        rtcReleaseDevice(device);
-        return true;
-    }
+    bool isSupported() const override { return embreeDeviceAvailable(); }
 
     std::unique_ptr<hd::RenderDelegate> createRenderDelegate(const std::map<hd::Token, hd::Value>& settings) override {
         return std::make_unique<OpalRenderDelegate>(settings);

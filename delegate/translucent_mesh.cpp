@@ -81,6 +81,7 @@ void TranslucentMesh::addLight(const hd::SdfPath& light, const LightSource& sour
     } catch (const Error& e) {
         fail("light '" + light + "': " + e.what());
     }
+    stats.lightMomentsMs += irradiance_->lastUpdate().momentsMs;
     appliedLights_[light] = source.version;
     ++stats.lightEvaluations;
 }

@@ -76,10 +76,14 @@ const RendererPluginInfo* PluginRegistry::findRendererPlugin(std::string_view ty
     return it == renderers_.end() ? nullptr : &*it;
 }
 
-RendererPluginHandle PluginRegistry::createRendererPlugin(std::string_view typeName) const {
+const RendererPluginInfo& PluginRegistry::requireRendererPlugin(std::string_view typeName) const {
     const RendererPluginInfo* info = findRendererPlugin(typeName);
     if (!info) throw Error(noPluginMessage(typeName));
-    return create(*info);
+    return *info;
+}
+
+RendererPluginHandle PluginRegistry::createRendererPlugin(std::string_view typeName) const {
+    return create(requireRendererPlugin(typeName));
 }
 
 RendererPluginHandle PluginRegistry::create(const RendererPluginInfo& info) const {
@@ -118,12 +122,12 @@ RendererPluginHandle PluginRegistry::defaultRendererPlugin() const {
 }
 
 std::string PluginRegistry::noPluginMessage(std::string_view typeName) const {
-    std::vector<std::string> known, paths;
-    for (const RendererPluginInfo& info : renderers_) known.push_back(info.typeName);
+    std::vector<std::string> available, paths;
+    for (const RendererPluginInfo& info : renderers_) available.push_back(describeRendererPlugin(info));
     for (const fs::path& path : searchPaths_) paths.push_back(path.string());
     std::string message = typeName.empty() ? "no renderer plugin found" : "no renderer plugin '" + std::string(typeName) + "'";
-    message += " (known: " + (known.empty() ? std::string("none") : joined(known, ", ")) + "; search paths: " +
-               (paths.empty() ? std::string("none") : joined(paths, ":")) + ")";
+    message += " (available: " + (available.empty() ? std::string("none") : joined(available, ", ")) +
+               "; search paths: " + (paths.empty() ? std::string("none") : joined(paths, ":")) + ")";
     if (!problems_.empty()) message += "; problems while reading manifests: " + joined(problems_, "; ");
     return message;
 }

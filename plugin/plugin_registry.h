@@ -47,8 +47,13 @@ public:
     const std::vector<RendererPluginInfo>& rendererPlugins() const { return renderers_; }
     // nullptr if no manifest declares `typeName`.
     const RendererPluginInfo* findRendererPlugin(std::string_view typeName) const;
+    // The plugin of that type; throws opal::Error otherwise: "no renderer plugin 'X'
+    // (available: DISPLAY NAME (TYPE, priority N), ...; search paths: A:B)", then the
+    // problems while reading manifests, if any.
+    const RendererPluginInfo& requireRendererPlugin(std::string_view typeName) const;
 
-    // Loads the type's library and calls its factory; throws opal::Error.
+    // Loads the type's library and calls its factory; throws opal::Error (for an unknown
+    // type, requireRendererPlugin's).
     RendererPluginHandle createRendererPlugin(std::string_view typeName) const;
     // The first plugin in priority order that loads and isSupported(); throws opal::Error
     // listing why each candidate was passed over if there is none.

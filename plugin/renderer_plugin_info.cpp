@@ -54,6 +54,10 @@ std::string factoryOf(const PluginManifest& manifest, const PluginType& type) {
 
 }  // namespace
 
+std::string describeRendererPlugin(const RendererPluginInfo& info) {
+    return info.displayName + " (" + info.typeName + ", priority " + std::to_string(info.priority) + ")";
+}
+
 bool isRendererPluginType(const PluginType& type) {
     return std::find(type.bases.begin(), type.bases.end(), RendererPluginBase) != type.bases.end();
 }

@@ -19,6 +19,9 @@ struct RendererPluginInfo {
     std::string factorySymbol;           // "factory", default "<typeName>_create"
 };
 
+// "DISPLAY NAME (TYPE, priority N)": how hosts name a plugin in lists and errors.
+std::string describeRendererPlugin(const RendererPluginInfo& info);
+
 // Whether `type` declares a renderer plugin: "HdRendererPlugin" is among its bases.
 bool isRendererPluginType(const PluginType& type);
 

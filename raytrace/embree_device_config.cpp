@@ -2,6 +2,8 @@
 
 #include "schema/error.h"
 
+#include <embree3/rtcore.h>
+
 #include <array>
 #include <cstdlib>
 #include <string_view>
@@ -22,6 +24,13 @@ std::string embreeDeviceConfig() {
         if (name == isa) return "max_isa=" + std::string(name);
     throw Error(std::string(kEmbreeIsaVariable) + " = '" + isa + "': not an instruction set Embree knows (sse2, "
                 "sse4.2, avx, avx2 or avx512)");
+}
+
+bool embreeDeviceAvailable() {
+    RTCDevice device = rtcNewDevice(embreeDeviceConfig().c_str());
+    if (!device) return false;
+    rtcReleaseDevice(device);
+    return true;
 }
 
 }  // namespace opal

@@ -16,4 +16,10 @@ inline constexpr const char* kEmbreeIsaVariable = "OPAL_EMBREE_ISA";
 // take SSE2 for it).
 std::string embreeDeviceConfig();
 
+// Whether Embree makes a device here, configured as every Opal device is: false where it
+// refuses the processor (it needs SSE2 at least). What a renderer plugin's isSupported()
+// asks. Throws opal::Error for a bad $OPAL_EMBREE_ISA (embreeDeviceConfig's), which no
+// device could be made with.
+bool embreeDeviceAvailable();
+
 }  // namespace opal

@@ -1,8 +1,11 @@
 #include "bake/light/direct_irradiance.h"
 
+#include "schema/error.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
 
 namespace opal {
 
@@ -36,6 +39,18 @@ Imath::V3d directIrradiance(const EmitterScene& emitter, const RayScene* blocker
             e += Imath::V3d(l) * mu;
         }
     return e * (solidAngle / (double(side) * side));
+}
+
+double relativeRmse(std::span<const Imath::V3d> estimate, std::span<const Imath::V3d> direct) {
+    if (estimate.size() != direct.size())
+        throw Error("relative RMSE: " + std::to_string(estimate.size()) + " estimates of E for " +
+                    std::to_string(direct.size()) + " directly integrated values");
+    double error = 0.0, norm = 0.0;
+    for (std::size_t i = 0; i < direct.size(); ++i) {
+        error += (estimate[i] - direct[i]).length2();
+        norm += direct[i].length2();
+    }
+    return norm > 0.0 ? std::sqrt(error / norm) : 0.0;
 }
 
 }  // namespace opal

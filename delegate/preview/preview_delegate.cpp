@@ -1,21 +1,13 @@
 #include "delegate/preview/preview_delegate.h"
 
+#include "delegate/hd/light_types.h"
 #include "delegate/preview/preview_aovs.h"
 #include "delegate/preview/preview_pass.h"
 #include "delegate/preview/preview_prims.h"
 
-#include <algorithm>
 #include <utility>
 
 namespace opal::preview {
-namespace {
-
-const std::vector<hd::Token> LightTypes = {hd::PrimType::SphereLight, hd::PrimType::DistantLight,
-                                           hd::PrimType::DomeLight, hd::PrimType::ShadowFieldLight};
-
-bool isLight(const hd::Token& type) { return std::find(LightTypes.begin(), LightTypes.end(), type) != LightTypes.end(); }
-
-}  // namespace
 
 PreviewRenderDelegate::PreviewRenderDelegate(const std::map<hd::Token, hd::Value>& settings) {
     for (const auto& [key, value] : settings) settings_.set(key, value);
@@ -25,7 +17,7 @@ std::vector<hd::Token> PreviewRenderDelegate::supportedRprimTypes() const { retu
 
 std::vector<hd::Token> PreviewRenderDelegate::supportedSprimTypes() const {
     std::vector<hd::Token> types = {hd::PrimType::Camera, hd::PrimType::Material};
-    types.insert(types.end(), LightTypes.begin(), LightTypes.end());
+    types.insert(types.end(), hd::lightPrimTypes().begin(), hd::lightPrimTypes().end());
     return types;
 }
 
@@ -39,7 +31,7 @@ std::unique_ptr<hd::Rprim> PreviewRenderDelegate::createRprim(const hd::Token& t
 std::unique_ptr<hd::Sprim> PreviewRenderDelegate::createSprim(const hd::Token& type, const hd::SdfPath& id) {
     if (type == hd::PrimType::Camera) return std::make_unique<PreviewCamera>(id);
     if (type == hd::PrimType::Material) return std::make_unique<PreviewMaterial>(id);
-    if (!isLight(type)) return nullptr;
+    if (!hd::isLightPrimType(type)) return nullptr;
     std::lock_guard lock(mutex_);
     ++lights_;
     return std::make_unique<PreviewLight>(id);

@@ -1,5 +1,6 @@
 #include "delegate/preview/preview_scene.h"
 
+#include "delegate/hd/mesh_material.h"
 #include "delegate/preview/preview_prims.h"
 #include "schema/error.h"
 #include "schema/scatter/material.h"
@@ -7,11 +8,10 @@
 namespace opal::preview {
 namespace {
 
-const Material& materialOf(const hd::RenderIndex& index, const ShadedMesh& mesh) {
-    if (mesh.material.empty()) return mesh.asset->defaultMaterial;
-    const auto* prim = dynamic_cast<const PreviewMaterial*>(index.sprim(mesh.material));
-    if (!prim) throw Error("preview delegate: no material <" + mesh.material + "> in the render index");
-    return prim->desc().subsurface;
+Material materialOf(const hd::RenderIndex& index, const ShadedMesh& mesh) {
+    const auto* prim =
+        mesh.material.empty() ? nullptr : dynamic_cast<const PreviewMaterial*>(index.sprim(mesh.material));
+    return hd::meshMaterial(mesh.material, *mesh.asset, prim ? &prim->desc() : nullptr).subsurface;
 }
 
 }  // namespace

@@ -4,7 +4,7 @@
 // so it is never the default where Opal runs (delegate/preview/CMakeLists.txt).
 #include "delegate/preview/preview_delegate.h"
 #include "plugin/renderer_plugin.h"
-#include "raytrace/ray_scene.h"
+#include "raytrace/embree_device_config.h"
 
 namespace opal::preview {
 
@@ -13,14 +13,7 @@ public:
     std::string displayName() const override { return "Opal Preview"; }
 
     // It needs an Embree device, as Opal does.
-    bool isSupported() const override {
-        try {
-            const RayScene probe;
-            return true;
-        } catch (const std::exception&) {
-            return false;
-        }
-    }
+    bool isSupported() const override { return embreeDeviceAvailable(); }
 
     std::unique_ptr<hd::RenderDelegate> createRenderDelegate(const std::map<hd::Token, hd::Value>& settings) override {
         return std::make_unique<PreviewRenderDelegate>(settings);

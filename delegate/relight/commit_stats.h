@@ -14,6 +14,9 @@ struct CommitStats {
     double totalMs = 0.0;        // the whole commitResources
     double rayScenesMs = 0.0;    // rebuilding the Embree scene
     double irradianceMs = 0.0;   // E_m at the samples: lights, shadows, domes (MeshIrradiance)
+    // Of irradianceMs: the moments of each light added or changed (MeshIrradiance::lastUpdate;
+    // a dome's: its map on the cube and the vectors' sums).
+    double lightMomentsMs = 0.0;
     double productsMs = 0.0;     // y_k = (w1 T_k w0^-1) w0 E (RelightEngine::setIrradiance)
     double materialMs = 0.0;     // s_k, the weighted sum, inverse 9/7, the vertices (setMaterial, outputs)
     double referenceMs = 0.0;    // the exact gather (opal:reference)
@@ -34,6 +37,7 @@ struct CommitStats {
         totalMs += o.totalMs;
         rayScenesMs += o.rayScenesMs;
         irradianceMs += o.irradianceMs;
+        lightMomentsMs += o.lightMomentsMs;
         productsMs += o.productsMs;
         materialMs += o.materialMs;
         referenceMs += o.referenceMs;

@@ -47,7 +47,7 @@ struct Entry {
 template <typename Index, std::uint32_t M>
 __attribute__((target("avx2,fma,f16c"))) void sampleAvx2(const Index* positions, const std::uint16_t* half,
                                                           std::uint64_t begin, std::uint64_t end,
-                                                          const float* radiance, const float* scales, float* out) {
+                                                          const float* radiance, const float (&scales)[M], float* out) {
     __m128 even[M], odd[M];
     for (std::uint32_t m = 0; m < M; ++m) even[m] = odd[m] = _mm_setzero_ps();
     std::uint64_t e = begin;
@@ -145,10 +145,13 @@ EnvironmentVectors::EnvironmentVectors(const EnvironmentTransfer& transfer, std:
 }
 
 // radiance: texels x 4 (RGB and a zero), so that each entry is whole-register arithmetic.
-// Even and odd entries go to separate accumulators to halve the add dependency chain.
+// Even and odd entries go to separate accumulators to halve the add dependency chain. Each
+// m's scale times the weight, once per call, on the stack.
 template <typename Index, std::uint32_t M>
-void EnvironmentVectors::addRows(const Index* positions, const float* radiance, const float* scales,
+void EnvironmentVectors::addRows(const Index* positions, const float* radiance, float weight,
                                  IrradianceMoments& moments) const {
+    float scales[M];
+    for (std::uint32_t m = 0; m < M; ++m) scales[m] = scales_[m] * weight;
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, samples(), kSamplesPerTask), [&](const auto& range) {
         for (std::size_t i = range.begin(); i != range.end(); ++i) {
 #if OPAL_ENVIRONMENT_VECTORS_AVX2
@@ -184,7 +187,7 @@ void EnvironmentVectors::addRows(const Index* positions, const float* radiance, 
 }
 
 void EnvironmentVectors::addDome(std::vector<float> radiance, std::span<const SurfaceSample> samples,
-                                 IrradianceMoments& moments) const {
+                                 IrradianceMoments& moments) {
     if (samples.size() != this->samples() || moments.terms != terms_ || moments.samples != this->samples())
         throw Error("dome light: the environment transfer has " + count(this->samples()) + " samples x " +
                     count(terms_) + " Fresnel terms, the asset " + count(samples.size()) + " samples, the irradiance " +
@@ -201,23 +204,22 @@ void EnvironmentVectors::addDome(std::vector<float> radiance, std::span<const Su
 }
 
 void EnvironmentVectors::addIrradiance(std::span<const float> haarRadiance, IrradianceMoments& moments,
-                                       float weight) const {
+                                       float weight) {
     if (moments.terms != terms_ || moments.samples != samples())
         throw Error("dome light: the environment transfer has " + count(samples()) + " samples x " + count(terms_) +
                     " Fresnel terms, the irradiance " + count(moments.samples) + " x " + count(moments.terms));
     if (haarRadiance.size() != std::size_t(texels_) * 3)
         throw Error("dome light: " + count(haarRadiance.size()) + " radiance values for " + count(texels_) +
                     " RGB texels");
-    std::vector<float> scales(scales_);
-    for (float& s : scales) s *= weight;
-    std::vector<float> padded(std::size_t(texels_) * 4, 0.0f);
-    for (std::size_t t = 0; t < texels_; ++t) std::copy_n(haarRadiance.data() + 3 * t, 3, padded.data() + 4 * t);
+    // Sized (and its fourth lanes zeroed) once; each call writes only the RGB lanes.
+    padded_.resize(std::size_t(texels_) * 4, 0.0f);
+    for (std::size_t t = 0; t < texels_; ++t) std::copy_n(haarRadiance.data() + 3 * t, 3, padded_.data() + 4 * t);
     const auto withTerms = [&](auto index) {
         using Index = std::remove_cv_t<std::remove_pointer_t<decltype(index)>>;
         switch (terms_) {
-            case 1: addRows<Index, 1>(index, padded.data(), scales.data(), moments); break;
-            case 2: addRows<Index, 2>(index, padded.data(), scales.data(), moments); break;
-            default: addRows<Index, 3>(index, padded.data(), scales.data(), moments); break;
+            case 1: addRows<Index, 1>(index, padded_.data(), weight, moments); break;
+            case 2: addRows<Index, 2>(index, padded_.data(), weight, moments); break;
+            default: addRows<Index, 3>(index, padded_.data(), weight, moments); break;
         }
     };
     if (texels_ <= 65536)

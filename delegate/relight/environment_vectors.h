@@ -45,13 +45,16 @@ public:
     // map in object space, texels x 3 (EnvironmentLight::cubeRadiance), and samples the
     // asset's (their object-space normals). Throws opal::Error when the moments, the
     // radiance or the samples do not match.
-    void addDome(std::vector<float> radiance, std::span<const SurfaceSample> samples, IrradianceMoments& moments) const;
+    void addDome(std::vector<float> radiance, std::span<const SurfaceSample> samples, IrradianceMoments& moments);
     // E_m(x_i) += weight <v_{i,m}, L> for the stored vectors v, haarRadiance texels x 3 (the
     // cube radiance Haar transformed per face). Throws opal::Error when the moments or the
-    // radiance do not match.
-    void addIrradiance(std::span<const float> haarRadiance, IrradianceMoments& moments, float weight = 1.0f) const;
+    // radiance do not match. Not thread-safe (nor addDome): the radiance is padded to 4
+    // floats a texel in a buffer the object keeps for the next call (each mesh's
+    // MeshIrradiance owns its vectors and relights its domes one at a time).
+    void addIrradiance(std::span<const float> haarRadiance, IrradianceMoments& moments, float weight = 1.0f);
 
-    // Bytes of the compact vectors.
+    // Bytes of the compact vectors (not the padded radiance, texels x 4 floats, kept after
+    // the first call).
     std::size_t memoryBytes() const {
         return offsets_.capacity() * sizeof(std::uint64_t) + positions16_.capacity() * sizeof(std::uint16_t) +
                positions32_.capacity() * sizeof(std::uint32_t) + halves_.capacity() * sizeof(std::uint16_t) +
@@ -60,7 +63,7 @@ public:
 
 private:
     template <typename Index, std::uint32_t M>
-    void addRows(const Index* positions, const float* radiance, const float* scales, IrradianceMoments& moments) const;
+    void addRows(const Index* positions, const float* radiance, float weight, IrradianceMoments& moments) const;
 
     std::uint32_t terms_ = 0;
     EnvironmentVectorKind kind_ = EnvironmentVectorKind::Visible;
@@ -73,6 +76,7 @@ private:
     std::vector<std::uint32_t> positions32_;  // otherwise
     std::vector<std::uint16_t> halves_;       // per position, terms binary16 values
     std::vector<float> scales_;               // 2^e per m
+    std::vector<float> padded_;               // addIrradiance's radiance, texels x 4 (RGB, 0)
 };
 
 }  // namespace opal

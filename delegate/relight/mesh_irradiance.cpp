@@ -57,9 +57,11 @@ void MeshIrradiance::compute(Contribution& c, const RayScene* scene) {
     const auto& dome = std::get<std::shared_ptr<const EnvironmentLight>>(c.source);
     if (asset_->environment.offsets.empty())
         throw Error("irradiance: asset '" + asset_->name + "' has no environment transfer for a dome light");
-    if (!environment_) environment_ = std::make_unique<const EnvironmentVectors>(asset_->environment, asset_->samples.size());
+    if (!environment_) environment_ = std::make_unique<EnvironmentVectors>(asset_->environment, asset_->samples.size());
+    const Stopwatch moments;
     const CubeMapLayout cube(asset_->environment.cubeFaceSize);
     environment_->addDome(dome->cubeRadiance(cube, objectToWorld_), asset_->samples, c.moments);
+    lastUpdate_.momentsMs = moments.ms();
 }
 
 void MeshIrradiance::resum() {

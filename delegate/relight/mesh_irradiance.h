@@ -59,8 +59,10 @@ public:
     // call with a dome and kept (so an eta edit or a dome rotation traces no rays).
     std::vector<float> referenceIrradiance(double eta);
     // The parts of the last light's recomputation (wall ms): its arrivals (E and the
-    // arrival cosine per sample; domes: none), its moments, and the re-sum of every light's
-    // term (setLight and removeLight; the others re-sum after several lights).
+    // arrival cosine per sample; domes: none), its moments (domes: the map on the cube and
+    // EnvironmentVectors::addDome, not the vectors' build with the first dome), and the
+    // re-sum of every light's term (setLight and removeLight; the others re-sum after
+    // several lights).
     struct UpdateTimes {
         double arrivalsMs = 0.0, momentsMs = 0.0, resumMs = 0.0;
     };
@@ -93,7 +95,7 @@ private:
     FresnelBasis basis_ = FresnelBasis::Legendre;
     FresnelResponse response_;
     PlacedSamples placed_;
-    std::unique_ptr<const EnvironmentVectors> environment_;  // built with the first dome
+    std::unique_ptr<EnvironmentVectors> environment_;        // built with the first dome
     std::unique_ptr<const EnvironmentReference> reference_;   // built with the first referenceIrradiance
     std::map<hd::SdfPath, Contribution> lights_;
     IrradianceMoments total_;

@@ -4,9 +4,9 @@
 // --list-delegates prints what the plugin registry finds instead, and exits 0.
 #include "delegate/hd/aov.h"
 #include "examples/opal-render/frame_range.h"
-#include "examples/opal-render/delegate_list.h"
 #include "examples/opal-render/render_command.h"
 #include "examples/scene/scene_material.h"
+#include "plugin/plugin_listing.h"
 #include "plugin/search_paths.h"
 #include "schema/error.h"
 
@@ -60,9 +60,11 @@ void defineOptions(CLI::App& app, opal::render::RenderOptions& options, std::str
     app.add_option("--step", frameStep, "Time codes between frames of --frames (default 1)")->needs(frames);
 }
 
+// --list-delegates: every detail of what the registry finds from this program.
 int listDelegates() {
     try {
-        opal::render::listDelegates(opal::PluginRegistry(opal::hostSearchPaths(opal::executablePath())), std::cout);
+        std::cout << opal::pluginListing(opal::PluginRegistry(opal::hostSearchPaths(opal::executablePath())),
+                                         {.details = true});
         return 0;
     } catch (const std::exception& e) {
         std::cerr << "opal-render: error: " << e.what() << '\n';

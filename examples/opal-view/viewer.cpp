@@ -16,6 +16,7 @@
 #include "examples/opal-view/material_panel.h"
 #include "examples/opal-view/screenshot.h"
 #include "examples/opal-view/viewport_input.h"
+#include "plugin/plugin_listing.h"
 #include "plugin/search_paths.h"
 #include "schema/error.h"
 
@@ -139,7 +140,7 @@ ColorConfig Viewer::adoptDelegateConfig() {
 }
 
 void Viewer::useDelegate(const std::string& typeName) {
-    const RendererPluginInfo& info = requireDelegate(registry_, typeName);
+    const RendererPluginInfo& info = registry_.requireRendererPlugin(typeName);
     if (info.typeName == renderer_.plugin.info().typeName) return;
     LoadedRenderer next = loadRenderer(registry_, info.typeName);  // the old one renders on meanwhile
     if (wipe_.on) setWipe(false, std::nullopt);
@@ -164,7 +165,9 @@ void Viewer::useDelegate(const std::string& typeName) {
     hud_.message = "renderer: " + renderer_.plugin.info().displayName;
 }
 
-std::string Viewer::delegateListing() { return view::delegateListing(registry_, renderer_.plugin.info().typeName); }
+std::string Viewer::delegateListing() {
+    return pluginListing(registry_, {.current = renderer_.plugin.info().typeName});
+}
 
 void Viewer::carryOutDelegateChoice() {
     if (!chosenDelegate_) return;

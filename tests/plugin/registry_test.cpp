@@ -239,8 +239,10 @@ TEST(PluginRegistry, AnUnknownTypeNamesWhatIsKnownAndWhatWasSkipped) {
     fs::path broken = dir.write("broken/plugInfo.json", "{");
     PluginRegistry registry({FixtureDir, dir.path() / "broken"});
     std::string message = createError(registry, "Storm");
-    EXPECT_EQ(message.rfind("no renderer plugin 'Storm' (known: OpalTestUnsupportedRendererPlugin, OpalTestRendererPlugin; "
-                            "search paths: " + FixtureDir.string() + ":" + (dir.path() / "broken").string() +
+    EXPECT_EQ(message.rfind("no renderer plugin 'Storm' (available: Opal Unsupported Test Renderer "
+                            "(OpalTestUnsupportedRendererPlugin, priority 0), Opal Test Renderer "
+                            "(OpalTestRendererPlugin, priority 10); search paths: " +
+                                FixtureDir.string() + ":" + (dir.path() / "broken").string() +
                                  "); problems while reading manifests: " + broken.string() + ":1:2: JSON syntax error", 0),
               0u)
         << message;

@@ -184,8 +184,12 @@ void expectSumOverStoredRows(std::uint32_t faceSize, std::uint32_t density, std:
     for (bool avx2 : {false, true}) {
         IrradianceMoments moments(samples, terms);
         moments.values.assign(moments.values.size(), 0.5f);  // addIrradiance adds
-        const EnvironmentVectors vectors(t, samples, avx2);
+        EnvironmentVectors vectors(t, samples, avx2);
         if (avx2 && !vectors.usesAvx2()) continue;  // this CPU has only the portable loop
+        // A call before, with other radiance and weight: the padded radiance the vectors
+        // keep between calls must hold this call's.
+        IrradianceMoments before(samples, terms);
+        vectors.addIrradiance(std::vector<float>(radiance.rbegin(), radiance.rend()), before, -2.0f);
         vectors.addIrradiance(radiance, moments);
         for (std::uint32_t r = 0; r < samples * terms; ++r)
             for (int c = 0; c < 3; ++c) {
@@ -209,7 +213,7 @@ TEST(EnvironmentLight, RejectsMismatchedTransfer) {
     const auto asset = hemisphereAsset(4, 2);
     IrradianceMoments wrongTerms(std::uint32_t(asset->samples.size()), 1);
     const std::vector<float> radiance(6 * 4 * 4 * 3, 1.0f);
-    const EnvironmentVectors vectors(asset->environment, asset->samples.size());
+    EnvironmentVectors vectors(asset->environment, asset->samples.size());
     EXPECT_THROW(vectors.addIrradiance(radiance, wrongTerms), Error);
     IrradianceMoments moments(std::uint32_t(asset->samples.size()), 2);
     EXPECT_THROW(vectors.addIrradiance(std::span(radiance).first(30), moments), Error);

@@ -7,6 +7,7 @@
 // pixel for pixel as before the switch.
 #include "examples/opal-view/core/delegate_choices.h"
 #include "examples/opal-view/core/script.h"
+#include "plugin/plugin_listing.h"
 #include "schema/error.h"
 #include "tests/render/render_scene.h"
 #include "tests/view/exr_compare.h"
@@ -30,17 +31,18 @@ TEST(DelegatePicker, ListsEveryDelegateTheRegistryFoundByPriorityWithTheCurrentM
     EXPECT_EQ(choices[1].displayName, "Opal Preview");
     EXPECT_EQ(choices[1].priority, 200);
     EXPECT_TRUE(choices[1].current);
-    EXPECT_EQ(view::delegateListing(registry, "OpalRendererPlugin"),
+    EXPECT_EQ(pluginListing(registry, {.current = "OpalRendererPlugin"}),
               "renderer plugins (by priority, smaller first):\n* " + OpalLine + "\n  " + PreviewLine + "\nskipped: none\n");
 }
 
 TEST(DelegatePicker, AnUnknownTypeListsTheAvailableOnes) {
     const PluginRegistry registry({BuildPlugins});
     try {
-        view::requireDelegate(registry, "Nope");
+        registry.requireRendererPlugin("Nope");
         FAIL() << "no error";
     } catch (const Error& e) {
-        EXPECT_EQ(std::string(e.what()), "no renderer plugin 'Nope' (available: " + OpalLine + ", " + PreviewLine + ")");
+        EXPECT_EQ(std::string(e.what()), "no renderer plugin 'Nope' (available: " + OpalLine + ", " + PreviewLine +
+                                             "; search paths: " + BuildPlugins.string() + ")");
     }
 }
 
@@ -126,7 +128,8 @@ TEST(DelegatePicker, AnUnknownDelegateFailsListingTheAvailableOnes) {
     const std::filesystem::path asset = dir.writeSphereAsset("sphere");
     const ViewRun option = runOpalView(dir, shellWord(asset) + " --delegate Nope --screenshot " + shellWord(dir / "x.png"));
     EXPECT_EQ(option.exitCode, 1);
-    EXPECT_NE(option.err.find("no renderer plugin 'Nope' (available: " + OpalLine + ", " + PreviewLine + ")"),
+    EXPECT_NE(option.err.find("no renderer plugin 'Nope' (available: " + OpalLine + ", " + PreviewLine +
+                              "; search paths: "),
               std::string::npos)
         << option.err;
     EXPECT_FALSE(std::filesystem::exists(dir / "x.png"));

@@ -1,7 +1,8 @@
 // The delegate picker's contents: every renderer plugin the registry found, in its
-// priority order (the order the default is chosen in), the one in use marked, and the
-// manifests or declarations it skipped with the reason (as opal-render --list-delegates
-// prints them). The viewer's panel draws these; the script action `delegates` prints them.
+// priority order (the order the default is chosen in), the one in use marked. The viewer's
+// panel draws these; the script action `delegates` prints plugin/plugin_listing.h's listing
+// (as opal-render --list-delegates does, a line per plugin), and an unknown type fails with
+// the registry's requireRendererPlugin message.
 #pragma once
 
 #include "plugin/plugin_registry.h"
@@ -20,14 +21,5 @@ struct DelegateChoice {
 };
 
 std::vector<DelegateChoice> delegateChoices(const PluginRegistry& registry, std::string_view current);
-
-// "renderer plugins (by priority, smaller first):", a line per choice ("* " marks the
-// current one: "* Opal (OpalRendererPlugin, priority 100)"), then "skipped:" and a line per
-// problem (or "skipped: none").
-std::string delegateListing(const PluginRegistry& registry, std::string_view current);
-
-// The registry's plugin of that type; throws opal::Error "no renderer plugin 'X'
-// (available: DISPLAY NAME (TYPE, priority N), ...)" otherwise, as the picker lists them.
-const RendererPluginInfo& requireDelegate(const PluginRegistry& registry, std::string_view typeName);
 
 }  // namespace opal::view

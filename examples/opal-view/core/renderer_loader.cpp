@@ -1,6 +1,5 @@
 #include "examples/opal-view/core/renderer_loader.h"
 
-#include "examples/opal-view/core/delegate_choices.h"
 #include "plugin/search_paths.h"
 
 namespace opal::view {
@@ -12,7 +11,7 @@ PluginRegistry hostRegistry(std::ostream& warnings) {
 }
 
 LoadedRenderer loadRenderer(const PluginRegistry& registry, const std::optional<std::string>& typeName) {
-    RendererPluginHandle plugin = typeName ? registry.createRendererPlugin(requireDelegate(registry, *typeName).typeName)
+    RendererPluginHandle plugin = typeName ? registry.createRendererPlugin(*typeName)
                                            : registry.defaultRendererPlugin();
     RenderDelegateHandle delegate = plugin.createRenderDelegate();
     return {std::move(plugin), std::move(delegate)};

@@ -18,8 +18,8 @@ struct LoadedRenderer {
 // The registry this program searches; what it skipped goes to `warnings`, one line each.
 PluginRegistry hostRegistry(std::ostream& warnings);
 
-// `typeName`: one of the registry's renderer plugin types (delegate_choices.h's
-// requireDelegate: an unknown one throws opal::Error listing those there are), else the
+// `typeName`: one of the registry's renderer plugin types (an unknown one throws the
+// registry's opal::Error listing those there are), else the
 // registry's default. Throws opal::Error when the plugin does not load.
 LoadedRenderer loadRenderer(const PluginRegistry& registry, const std::optional<std::string>& typeName);
 

@@ -28,7 +28,7 @@ public:
     // Renders with the renderer plugin of that type from now on (the same scene, camera and
     // edits); throws opal::Error listing the available ones for an unknown type.
     virtual void useDelegate(const std::string& typeName) = 0;
-    // The delegate picker's list (delegate_choices.h's delegateListing).
+    // The delegate picker's list (plugin/plugin_listing.h's, the current one marked).
     virtual std::string delegateListing() = 0;
     // The A/B wipe on or off; a split (a fraction of the width, 0 to 1; throws opal::Error
     // otherwise) moves its line and turns it on.
