@@ -64,7 +64,7 @@ void defineOptions(CLI::App& app, opal::render::RenderOptions& options, std::str
 int listDelegates() {
     try {
         std::cout << opal::pluginListing(opal::PluginRegistry(opal::hostSearchPaths(opal::executablePath())),
-                                         {.details = true});
+                                         {.current = {}, .details = true});
         return 0;
     } catch (const std::exception& e) {
         std::cerr << "opal-render: error: " << e.what() << '\n';

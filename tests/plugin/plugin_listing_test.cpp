@@ -26,7 +26,7 @@ TEST(PluginListing, ALinePerPluginWithTheCurrentOneMarked) {
 
 TEST(PluginListing, InDetailWithTheSearchPathsLibrariesAndManifests) {
     const PluginRegistry registry({FixtureDir});
-    const std::string listing = pluginListing(registry, {.details = true});
+    const std::string listing = pluginListing(registry, {.current = {}, .details = true});
     EXPECT_EQ(listing.rfind("search paths:\n  " + FixtureDir.string() +
                                 "\nrenderer plugins (by priority, smaller first):\n"
                                 "  OpalTestUnsupportedRendererPlugin\n",
