@@ -150,6 +150,22 @@ struct ShadowFieldLight::Texels {
 namespace {
 constexpr std::size_t kNoRay = std::numeric_limits<std::size_t>::max();
 constexpr double kFaintBlock = 0.02;
+
+// The energy below which a sample's lit blocks are faint: the faintest blocks, taken in
+// ascending order while their sum stays under kFaintBlock of the sample's light. So the
+// untraced light is bounded by that fraction, and the brightest block is always traced.
+// Reorders `energies`.
+double faintEnergy(std::span<double> energies) {
+    std::sort(energies.begin(), energies.end());
+    double all = 0.0;
+    for (double e : energies) all += e;
+    double sum = 0.0;
+    for (double e : energies) {
+        if (sum + e >= kFaintBlock * all) return e;
+        sum += e;
+    }
+    return 0.0;  // no light
+}
 }  // namespace
 
 struct ShadowFieldLight::LitBlock {
@@ -177,6 +193,7 @@ struct ShadowFieldLight::Scratch {
     std::vector<Texels> blocks;
     // Per sample: its lit blocks (irradiance, unit direction, ray or kNoRay) and their rays.
     std::vector<LitBlock> lit;
+    std::vector<double> energies;  // the lit blocks' light, for faintEnergy
     std::vector<Ray> rays;
     std::vector<std::uint8_t> blocked;
     FarRays far;
@@ -189,6 +206,7 @@ struct ShadowFieldLight::Scratch {
           touchedBlocks(f.blocks + 1),
           blocks(f.blocks),
           lit(f.blocks),
+          energies(f.blocks),
           rays(f.blocks),
           blocked(f.blocks) {}
 };
@@ -253,10 +271,10 @@ LightArrival ShadowFieldLight::arrivalInField(const Imath::V3d& x, const Imath::
     }
     clock.lap(st.cosineMs);
     // The lit blocks in order, and one occlusion ray each: rays from one origin toward one
-    // emitter, traced together as coherent packets. A block with less than kFaintBlock of
-    // the sample's light casts none: it takes the visible fraction of the traced blocks'.
-    double allLight = 0.0;
-    for (std::size_t t = 0; t < litBlocks; ++t) allLight += channelSum(s.blocks[s.touchedBlocks[t]].e);
+    // emitter, traced together as coherent packets. The faint blocks cast none: they take
+    // the visible fraction of the traced blocks' light.
+    for (std::size_t t = 0; t < litBlocks; ++t) s.energies[t] = channelSum(s.blocks[s.touchedBlocks[t]].e);
+    const double faintBelow = faintEnergy({s.energies.data(), litBlocks});
     std::size_t lit = 0, rays = 0;
     const Imath::V3f origin = Imath::V3f(x + n * double(offset));
     for (std::size_t t = 0; t < litBlocks; ++t) {
@@ -265,7 +283,7 @@ LightArrival ShadowFieldLight::arrivalInField(const Imath::V3d& x, const Imath::
         const Texels block = std::exchange(s.blocks[b], Texels{});
         if (channelSum(block.e) <= 0.0) continue;
         const Imath::V3d d = block.direction.normalized();
-        const bool faint = channelSum(block.e) < kFaintBlock * allLight;
+        const bool faint = channelSum(block.e) < faintBelow;
         const double reach = scene && !faint ? shadowReach(p, d) * scale_ * (1.0 - 1e-4) : 0.0;
         s.lit[lit] = {block.e, d, reach > 0.0 ? rays : kNoRay, faint};
         if (reach > 0.0) s.rays[rays++] = Ray(origin, Imath::V3f(d * rotation_), 0.0f, float(reach));

@@ -13,7 +13,11 @@
 //     where that ray enters the emitter's bounding sphere (a sample's rays go to Embree
 //     together, as coherent packets). A blocker beyond the emitter
 //     (the far rim of a melted candle, seen past the flame) therefore never shadows it;
-//     the emitter itself is not in the ray scene and never blocks.
+//     the emitter itself is not in the ray scene and never blocks. The faintest blocks,
+//     together under 2% of the sample's light, trace no ray and take the visible fraction
+//     of the traced blocks' light.
+//   - a sample with the emitter's whole bounding sphere behind its tangent plane: 0,
+//     without a lookup (exact: it sees no point of the emitter).
 //   - beyond the outer sphere, the field's far-field point light: E_perp = I(w) / r^2 with
 //     one occlusion ray to the emitter's bounding sphere (I(w) blended from a table made when
 //     the field loads; a chunk's rays traced together as packets).
