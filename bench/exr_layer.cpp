@@ -26,7 +26,7 @@ ExrLayer readExrLayer(const std::string& path, const std::string& layer) {
     std::vector<float> all(std::size_t(spec.width) * spec.height * spec.nchannels);
     if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, all.data()))
         throw Error(path + ": cannot read its pixels: " + in->geterror());
-    ExrLayer out{spec.width, spec.height, {}, {}};
+    ExrLayer out{path, spec.width, spec.height, {}, {}};
     const std::size_t pixels = std::size_t(spec.width) * spec.height;
     out.rgb.resize(3 * pixels);
     out.primId.resize(pixels);
@@ -39,10 +39,12 @@ ExrLayer readExrLayer(const std::string& path, const std::string& layer) {
 }
 
 std::vector<std::uint8_t> primMask(const ExrLayer& a, const ExrLayer& b, const std::vector<int>& ids) {
-    const auto chosen = [&](float id) { return std::find(ids.begin(), ids.end(), int(id)) != ids.end() && id >= 0.0f; };
-    if (a.primId.size() != b.primId.size())
-        throw Error("image sizes differ: " + std::to_string(a.width) + "x" + std::to_string(a.height) + " and " +
-                    std::to_string(b.width) + "x" + std::to_string(b.height));
+    const auto chosen = [&](float id) {
+        return id >= 0.0f && id < 2e9f && std::find(ids.begin(), ids.end(), int(id)) != ids.end();
+    };
+    if (a.width != b.width || a.height != b.height)
+        throw Error(b.path + ": " + std::to_string(b.width) + "x" + std::to_string(b.height) + ", but " + a.path +
+                    " is " + std::to_string(a.width) + "x" + std::to_string(a.height));
     std::vector<std::uint8_t> mask(a.primId.size());
     for (std::size_t p = 0; p < mask.size(); ++p) mask[p] = chosen(a.primId[p]) && a.primId[p] == b.primId[p];
     return mask;

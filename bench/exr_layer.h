@@ -11,6 +11,7 @@
 namespace opal::bench {
 
 struct ExrLayer {
+    std::string path;  // the file it was read from, for errors
     int width = 0, height = 0;
     std::vector<float> rgb;     // 3 per pixel, rows from the top
     std::vector<float> primId;  // 1 per pixel; -1 where nothing was hit
@@ -20,7 +21,8 @@ struct ExrLayer {
 // channels or primId.id.
 ExrLayer readExrLayer(const std::string& path, const std::string& layer);
 
-// 1 where both images show one of `ids` and the same one.
+// 1 where both images show one of `ids` and the same one. Throws opal::Error naming both
+// files when their sizes differ.
 std::vector<std::uint8_t> primMask(const ExrLayer& a, const ExrLayer& b, const std::vector<int>& ids);
 
 }  // namespace opal::bench

@@ -52,13 +52,18 @@ void passCrashPoints(FarmStage stage, std::uint32_t index) {
 // One k's N sections are made together, in two passes over its rows (count each block's
 // entries, then place them) rather than four passes per block: the rows task's memory
 // beyond its rows is one k's entries, 12 bytes each.
-std::vector<std::string> rowsSections(const TaskContext& c, const Step1Rows& rows, std::size_t firstRow) {
-    const std::uint32_t blocks = c.spec.shards;
+// The column block of each column.
+std::vector<std::uint32_t> columnBlocks(const TaskContext& c) {
     std::vector<std::uint32_t> blockOf(c.plan.n());
-    for (std::uint32_t b = 0; b < blocks; ++b) {
+    for (std::uint32_t b = 0; b < c.spec.shards; ++b) {
         const auto [columnBegin, columnEnd] = c.shard(b);
         std::fill(blockOf.begin() + std::ptrdiff_t(columnBegin), blockOf.begin() + std::ptrdiff_t(columnEnd), b);
     }
+    return blockOf;
+}
+
+std::vector<std::string> rowsSections(const Step1Rows& rows, std::size_t firstRow,
+                                      const std::vector<std::uint32_t>& blockOf, std::uint32_t blocks) {
     std::vector<std::uint64_t> count(blocks, 0);
     forEachRowEntry(rows, firstRow, [&](std::uint32_t, std::uint32_t j, float v) {
         if (v != 0.0f) ++count[blockOf[j]];
@@ -96,8 +101,9 @@ void runRows(const TaskContext& c, std::uint32_t index, const CancelToken& cance
                      nullptr, cancel);
     // Section by section, each k's rows released once written: the rows are the peak.
     TaskFileWriter file(c.folder.output(FarmStage::Rows, index), rows.size() * c.spec.shards);
+    const std::vector<std::uint32_t> blockOf = columnBlocks(c);
     for (Step1Rows& k : rows) {
-        for (const std::string& section : rowsSections(c, k, begin)) file.add(section);
+        for (const std::string& section : rowsSections(k, begin, blockOf, c.spec.shards)) file.add(section);
         k = Step1Rows{};
     }
     passCrashPoints(FarmStage::Rows, index);

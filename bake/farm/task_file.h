@@ -60,8 +60,6 @@ private:
     std::string bytes_;
 };
 
-// Reads one section's fields in the order they were written; running off its end or an
-// array longer than what is left throws opal::Error naming `context` and the field.
 // The values of an array in a section, read in place (each through memcpy: the bytes
 // need not be aligned for T), for arrays too large to copy out.
 template <class T>
@@ -81,6 +79,8 @@ private:
     std::size_t count_ = 0;
 };
 
+// Reads one section's fields in the order they were written; running off its end or an
+// array longer than what is left throws opal::Error naming `context` and the field.
 class SectionReader {
 public:
     SectionReader(std::string bytes, std::string context) : bytes_(std::move(bytes)), context_(std::move(context)) {}

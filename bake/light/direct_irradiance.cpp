@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <string>
 
@@ -50,7 +51,8 @@ double relativeRmse(std::span<const Imath::V3d> estimate, std::span<const Imath:
         error += (estimate[i] - direct[i]).length2();
         norm += direct[i].length2();
     }
-    return norm > 0.0 ? std::sqrt(error / norm) : 0.0;
+    if (norm > 0.0) return std::sqrt(error / norm);
+    return error > 0.0 ? std::numeric_limits<double>::infinity() : 0.0;  // light where there is none
 }
 
 }  // namespace opal

@@ -24,8 +24,9 @@ Imath::V3d directIrradiance(const EmitterScene& emitter, const RayScene* blocker
                             const Imath::V3d& x, const Imath::V3d& n, double offset, int side = 32);
 
 // sqrt(sum |estimate - direct|^2 / sum |direct|^2) over the points and channels: an
-// estimate of E (the shadow field's) against directIrradiance at the same points; 0 when
-// every direct value is 0. Throws opal::Error when the counts differ.
+// estimate of E (the shadow field's) against directIrradiance at the same points. When
+// every direct value is 0: 0 for an estimate that is 0 too, infinity for one with light.
+// Throws opal::Error when the counts differ.
 double relativeRmse(std::span<const Imath::V3d> estimate, std::span<const Imath::V3d> direct);
 
 }  // namespace opal

@@ -29,7 +29,7 @@ PreviewScene::PreviewScene(const hd::RenderIndex& index) {
         } catch (const Error& e) {
             throw Error("preview delegate: mesh <" + prim->id() + ">: " + e.what());
         }
-        meshes_.push_back({desc.asset, desc.transform.inverse().transposed(), desc.material, Rgb(0.0), id});
+        meshes_.push_back({prim->id(), desc.asset, desc.transform.inverse().transposed(), desc.material, Rgb(0.0), id});
         triangles_ += rays_.triangles(rays_.meshCount() - 1).size() / 3;
     });
     rays_.commit();
@@ -40,8 +40,7 @@ void PreviewScene::updateAlbedos(const hd::RenderIndex& index) {
         try {
             mesh.albedo = toArtist(materialOf(index, mesh)).albedo;
         } catch (const Error& e) {
-            throw Error("preview delegate: material of <" + (mesh.material.empty() ? mesh.asset->name : mesh.material) +
-                        ">: " + e.what());
+            throw Error("preview delegate: mesh <" + mesh.path + ">: " + e.what());
         }
     }
 }

@@ -14,6 +14,7 @@
 namespace opal::preview {
 
 struct ShadedMesh {
+    hd::SdfPath path;                               // the mesh prim, for errors
     std::shared_ptr<const TranslucentAsset> asset;  // keeps the normals alive
     Imath::M44d normalToWorld;  // the inverse transpose of object to world (row vectors)
     hd::SdfPath material;       // empty: the asset's default material

@@ -53,12 +53,12 @@ public:
     // MeshIrradiance owns its vectors and relights its domes one at a time).
     void addIrradiance(std::span<const float> haarRadiance, IrradianceMoments& moments, float weight = 1.0f);
 
-    // Bytes of the compact vectors (not the padded radiance, texels x 4 floats, kept after
+    // Bytes held: the compact vectors and the padded radiance (texels x 4 floats, kept after
     // the first call).
     std::size_t memoryBytes() const {
         return offsets_.capacity() * sizeof(std::uint64_t) + positions16_.capacity() * sizeof(std::uint16_t) +
                positions32_.capacity() * sizeof(std::uint32_t) + halves_.capacity() * sizeof(std::uint16_t) +
-               scales_.capacity() * sizeof(float);
+               scales_.capacity() * sizeof(float) + padded_.capacity() * sizeof(float);
     }
 
 private:

@@ -49,6 +49,15 @@ TEST(ExrLayer, TheMaskKeepsThePixelsBothImagesGiveTheChosenPrims) {
                    b = readExrLayer((dir / "b.exr").string(), "subsurface");
     EXPECT_EQ(primMask(a, b, {0}), (std::vector<std::uint8_t>{1, 0, 0}));
     EXPECT_EQ(primMask(a, b, {0, 1}), (std::vector<std::uint8_t>{1, 1, 0}));
+    ExrLayer transposed = b;
+    transposed.width = 1;
+    transposed.height = 3;
+    try {
+        (void)primMask(a, transposed, {0});
+        FAIL() << "images of other sizes were compared";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("b.exr: 1x3, but "), std::string::npos) << e.what();
+    }
 }
 
 TEST(ExrLayer, AMissingLayerOrFileIsNamed) {

@@ -17,6 +17,7 @@
 #include <cmath>
 #include <numbers>
 #include <span>
+#include <limits>
 #include <vector>
 
 namespace opal {
@@ -138,7 +139,9 @@ TEST(ShadowFieldVsDirect, RelativeRmseByHand) {
     const std::vector<Imath::V3d> direct = {{3.0, 0.0, 0.0}, {0.0, 4.0, 0.0}};
     EXPECT_NEAR(relativeRmse(std::vector<Imath::V3d>{{3.3, 0.0, 0.0}, {0.0, 4.4, 0.0}}, direct), 0.1, 1e-12);
     EXPECT_NEAR(relativeRmse(std::vector<Imath::V3d>{{3.0, 0.0, 3.0}, {0.0, 4.0, 0.0}}, direct), 0.6, 1e-12);
-    EXPECT_EQ(relativeRmse(direct, std::vector<Imath::V3d>(2, Imath::V3d(0.0))), 0.0);
+    const std::vector<Imath::V3d> dark(2, Imath::V3d(0.0));
+    EXPECT_EQ(relativeRmse(dark, dark), 0.0);
+    EXPECT_EQ(relativeRmse(direct, dark), std::numeric_limits<double>::infinity());  // light where none arrives
     EXPECT_THROW(relativeRmse(std::span(direct).first(1), direct), Error);
 }
 
