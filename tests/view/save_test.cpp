@@ -14,9 +14,9 @@
 namespace opal::test {
 namespace {
 
-// The viewer's EXR (within `tolerance`) and PNG (exactly) against opal-render's of the layer
-// it saved.
-void expectOpalRenderMatches(const SceneDir& dir, double tolerance = 0.0) {
+// The viewer's EXR (within `tolerance`) and PNG (within `pngCodes` of 255) against
+// opal-render's of the layer it saved.
+void expectOpalRenderMatches(const SceneDir& dir, double tolerance = 0.0, int pngCodes = 0) {
     const ViewRun render = runOpalRender(dir, shellWord(dir / "saved.usda") + " -o " + shellWord(dir / "render.exr") +
                                                   " --preview " + shellWord(dir / "render.png"));
     ASSERT_EQ(render.exitCode, 0) << render.err;
@@ -28,7 +28,7 @@ void expectOpalRenderMatches(const SceneDir& dir, double tolerance = 0.0) {
     std::cout << "viewer vs opal-render on the saved layer: EXR max difference " << exr << " over "
               << truth.channels << " channels, PNG " << png * 255.0 << " codes\n";
     EXPECT_LE(exr, tolerance);
-    EXPECT_EQ(png, 0.0);
+    EXPECT_LE(png * 255.0, pngCodes + 1e-6);
     EXPECT_GT(channelMean(truth, "subsurface.G"), 0.0) << "the asset is lit";
 }
 
@@ -197,8 +197,13 @@ TEST(Save, AShadowFieldLightAddedFromABakedLightLayerIsSaved) {
     ASSERT_EQ(run.exitCode, 0) << run.err;
     // The viewer's and opal-render's specular under this light differ by one binary16 step
     // at some pixel (issue 15's open 1-ulp specular difference): measured 1.5e-5 at a pixel of
-    // 0.022, and 1.2e-4 at one of 0.151 (specular.B). One step at values up to 0.25.
-    expectOpalRenderMatches(dir, 1.25e-4);
+    // 0.022, and 1.2e-4 at one of 0.151 (specular.B). One step at values up to 0.25, and
+    // so one PNG code where a pixel's colour lies at a code's edge (measured once, at 9 of
+    // 153,600 pixels). The light and camera the delegate receives are bit-identical in
+    // both programs, and the viewer re-rendering the saved layer matches opal-render
+    // exactly: the difference depends on the viewer's edit history (load, disable the key
+    // light, add the field), not on what the layer saves.
+    expectOpalRenderMatches(dir, 1.25e-4, 1);
     const std::string layer = slurpFile(dir / "saved.usda");
     EXPECT_NE(layer.find("def OpalShadowFieldLight \"Flame\""), std::string::npos) << layer;
     EXPECT_NE(layer.find("@./flame.light.opal@"), std::string::npos) << layer;
