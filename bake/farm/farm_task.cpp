@@ -46,12 +46,6 @@ void passCrashPoints(FarmStage stage, std::uint32_t index) {
     crashPoint(point + ":attempt-" + (attempt ? attempt : "1"));
 }
 
-// rows-I.task: section k * N + c holds T_k's entries of rows shard I in column block c,
-// as (o, j, value) arrays in row order, zeros dropped:
-//   u64 count | o[count] (u32) | u64 count | j[count] (u32) | u64 count | value[count] (f32)
-// One k's N sections are made together, in two passes over its rows (count each block's
-// entries, then place them) rather than four passes per block: the rows task's memory
-// beyond its rows is one k's entries, 12 bytes each.
 // The column block of each column.
 std::vector<std::uint32_t> columnBlocks(const TaskContext& c) {
     std::vector<std::uint32_t> blockOf(c.plan.n());
@@ -62,19 +56,28 @@ std::vector<std::uint32_t> columnBlocks(const TaskContext& c) {
     return blockOf;
 }
 
-std::vector<std::string> rowsSections(const Step1Rows& rows, std::size_t firstRow,
-                                      const std::vector<std::uint32_t>& blockOf, std::uint32_t blocks) {
+// rows-I.task: section k * N + c holds T_k's entries of rows shard I in column block c,
+// as (o, j, value) arrays in row order, zeros dropped:
+//   u64 count | o[count] (u32) | u64 count | j[count] (u32) | u64 count | value[count] (f32)
+// One k's N sections are made together, in two passes over its rows (count each block's
+// entries, then place them) rather than four passes per block: the rows task's memory
+// beyond its rows is one k's entries, 12 bytes each, in `sections`, whose strings are
+// reused from k to k: their memory is touched once per task, not once per k (fresh pages
+// cost a page fault each).
+void rowsSections(const Step1Rows& rows, std::size_t firstRow, const std::vector<std::uint32_t>& blockOf,
+                  std::uint32_t blocks, std::vector<std::string>& sections) {
     std::vector<std::uint64_t> count(blocks, 0);
     forEachRowEntry(rows, firstRow, [&](std::uint32_t, std::uint32_t j, float v) {
         if (v != 0.0f) ++count[blockOf[j]];
     });
-    std::vector<std::string> sections(blocks);
+    sections.resize(blocks);
     struct Cursor {
         char *o, *j, *v;
     };
     std::vector<Cursor> at(blocks);
     for (std::uint32_t b = 0; b < blocks; ++b) {
         const std::uint64_t n = count[b];
+        sections[b].clear();
         sections[b].resize(3 * sizeof(std::uint64_t) + n * 12);
         char* const base = sections[b].data();
         for (std::uint64_t offset : {std::uint64_t(0), 8 + 4 * n, 16 + 8 * n}) std::memcpy(base + offset, &n, 8);
@@ -90,7 +93,6 @@ std::vector<std::string> rowsSections(const Step1Rows& rows, std::size_t firstRo
         cursor.j += 4;
         cursor.v += 4;
     });
-    return sections;
 }
 
 void runRows(const TaskContext& c, std::uint32_t index, const CancelToken& cancel) {
@@ -102,29 +104,36 @@ void runRows(const TaskContext& c, std::uint32_t index, const CancelToken& cance
     // Section by section, each k's rows released once written: the rows are the peak.
     TaskFileWriter file(c.folder.output(FarmStage::Rows, index), rows.size() * c.spec.shards);
     const std::vector<std::uint32_t> blockOf = columnBlocks(c);
+    std::vector<std::string> sections;
     for (Step1Rows& k : rows) {
-        for (const std::string& section : rowsSections(k, begin, blockOf, c.spec.shards)) file.add(section);
+        rowsSections(k, begin, blockOf, c.spec.shards, sections);
+        for (const std::string& section : sections) file.add(section);
         k = Step1Rows{};
     }
     passCrashPoints(FarmStage::Rows, index);
     file.commit();
 }
 
+// Every rows shard's file, mapped once for all k.
+std::vector<TaskFile> rowsFiles(const TaskContext& c) {
+    std::vector<TaskFile> files;
+    for (std::uint32_t s = 0; s < c.spec.shards; ++s) files.emplace_back(c.folder.output(FarmStage::Rows, s));
+    return files;
+}
+
 // T_k's columns of block `index`, from every rows shard in row order.
-Step1Columns gatherBlock(const TaskContext& c, std::uint32_t index, std::size_t k) {
+Step1Columns gatherBlock(const TaskContext& c, const std::vector<TaskFile>& rows, std::uint32_t index,
+                         std::size_t k) {
     const auto [begin, end] = c.shard(index);
-    // T_k's entries of the block from every rows shard, read once and visited in place
-    // (the sections' bytes and then the block's columns are what the task holds).
+    // T_k's entries of the block from every rows shard, visited in place in the mapped
+    // files (the block's columns are what the task holds).
     struct Entries {
         SectionArray<std::uint32_t> o, j;
         SectionArray<float> v;
     };
-    std::vector<SectionReader> sections;
-    sections.reserve(c.spec.shards);  // never moved once viewed
     std::vector<Entries> pieces;
     for (std::uint32_t s = 0; s < c.spec.shards; ++s) {
-        SectionReader& r =
-            sections.emplace_back(TaskFile(c.folder.output(FarmStage::Rows, s)).section(k * c.spec.shards + index));
+        SectionReader r = rows[s].section(k * c.spec.shards + index);
         const Entries& e = pieces.emplace_back(
             Entries{r.view<std::uint32_t>("rows"), r.view<std::uint32_t>("columns"), r.view<float>("values")});
         r.expectEnd();
@@ -147,8 +156,9 @@ void runColumns(const TaskContext& c, std::uint32_t index, const CancelToken& ca
     // One section: the histogram. The block's columns are not written: the keep task
     // gathers them again from the rows shards, which costs less than writing and reading
     // them back (the whole step-1 matrix, once more, across the columns files).
+    const std::vector<TaskFile> rows = rowsFiles(c);
     for (std::size_t k = 0; k < c.plan.K(); ++k)
-        histogram.add(histogramOfColumns(gatherBlock(c, index, k), c.plan.layout, c.weights, k, stage, cancel));
+        histogram.add(histogramOfColumns(gatherBlock(c, rows, index, k), c.plan.layout, c.weights, k, stage, cancel));
     TaskFileWriter file(c.folder.output(FarmStage::Columns, index), 1);
     SectionWriter w;
     w.array(histogram.words());
@@ -172,9 +182,10 @@ void runKeep(const TaskContext& c, std::uint32_t index, const CancelToken& cance
     const int minBin = allEnergies(c).thresholdBin(c.plan.settings.energyFraction);
     const StageScope stage(nullptr, "", 0);
     TaskFileWriter file(c.folder.output(FarmStage::Keep, index), c.plan.K());
+    const std::vector<TaskFile> rows = rowsFiles(c);
     for (std::size_t k = 0; k < c.plan.K(); ++k) {
         const KeptColumns kept =
-            keptColumns(gatherBlock(c, index, k), c.plan.layout, c.weights, k, minBin, stage, cancel);
+            keptColumns(gatherBlock(c, rows, index, k), c.plan.layout, c.weights, k, minBin, stage, cancel);
         std::vector<std::uint32_t> counts, p;
         std::vector<float> values;
         for (const auto& column : kept.columns) {

@@ -1,10 +1,11 @@
 #include "bake/farm/task_file.h"
 
+#include "bake/farm/mapped_file.h"
+
 #include "schema/asset/xxhash64.h"
 #include "schema/error.h"
 #include "schema/usd/atomic_file.h"
 
-#include <fstream>
 
 namespace opal {
 
@@ -23,19 +24,6 @@ void append(std::string& out, T v) {
     out.append(reinterpret_cast<const char*>(&v), sizeof v);
 }
 
-// Reads exactly `size` bytes at `offset`; throws naming the file and `what`.
-std::string readAt(const std::filesystem::path& path, std::uint64_t offset, std::uint64_t size, std::string_view what) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw Error(path.string() + ": cannot open the farm task file");
-    in.seekg(std::streamoff(offset));
-    std::string bytes(size, '\0');
-    in.read(bytes.data(), std::streamsize(size));
-    if (!in || std::uint64_t(in.gcount()) != size)
-        throw Error(path.string() + ": " + std::string(what) + " is cut short (the file has " +
-                    std::to_string(std::filesystem::file_size(path)) + " bytes)");
-    return bytes;
-}
-
 }  // namespace
 
 void SectionWriter::text(std::string_view s) {
@@ -46,7 +34,7 @@ void SectionWriter::text(std::string_view s) {
 std::string SectionReader::text(std::string_view what) {
     const std::uint64_t size = u64(what);
     if (size > bytes_.size() - at_) fail(what, "holds " + std::to_string(size) + " bytes");
-    std::string s = bytes_.substr(at_, size);
+    std::string s(bytes_.substr(at_, size));
     at_ += size;
     return s;
 }
@@ -115,24 +103,29 @@ void writeTaskFile(const std::filesystem::path& path, std::span<const std::strin
 
 TaskFile::TaskFile(std::filesystem::path path) : path_(std::move(path)) {
     std::error_code error;
-    const std::uint64_t fileSize = std::filesystem::file_size(path_, error);
-    if (error) throw Error(path_.string() + ": cannot read the farm task file: " + error.message());
+    if (!std::filesystem::is_regular_file(path_, error))
+        throw Error(path_.string() + ": cannot read the farm task file: " +
+                    (error ? error.message() : std::string("not a regular file")));
+    file_ = std::make_shared<const MappedFile>(path_);
+    const std::string_view bytes = file_->bytes();
+    const std::uint64_t fileSize = bytes.size();
     const std::size_t fixed = kMagic.size() + 2 * sizeof(std::uint32_t);
-    const std::string start = readAt(path_, 0, std::min<std::uint64_t>(fixed, fileSize), "the header");
-    if (start.size() < fixed || start.compare(0, kMagic.size(), kMagic) != 0)
+    if (bytes.size() < fixed || bytes.compare(0, kMagic.size(), kMagic) != 0)
         throw Error(path_.string() + ": not a farm task file (no OPALTASK header)");
     std::uint32_t version = 0, count = 0;
-    std::memcpy(&version, start.data() + kMagic.size(), sizeof version);
-    std::memcpy(&count, start.data() + kMagic.size() + sizeof version, sizeof count);
+    std::memcpy(&version, bytes.data() + kMagic.size(), sizeof version);
+    std::memcpy(&count, bytes.data() + kMagic.size() + sizeof version, sizeof count);
     if (version != kVersion)
         throw Error(path_.string() + ": farm task file version " + std::to_string(version) + ", this opal-bake reads " +
                     std::to_string(kVersion));
     if (count > kMaxSections) throw Error(path_.string() + ": " + std::to_string(count) + " sections (corrupt header)");
     const std::uint64_t headerSize = fixed + std::uint64_t(count) * 16 + 8;
-    const std::string header = readAt(path_, 0, headerSize, "the header");
+    if (headerSize > fileSize)
+        throw Error(path_.string() + ": the header is cut short (the file has " + std::to_string(fileSize) + " bytes)");
+    const std::string_view header = bytes.substr(0, headerSize);
     std::uint64_t stored = 0;
     std::memcpy(&stored, header.data() + headerSize - 8, sizeof stored);
-    if (stored != checksum(std::string_view(header).substr(0, headerSize - 8)))
+    if (stored != checksum(header.substr(0, headerSize - 8)))
         throw Error(path_.string() + ": the header's checksum does not match (a damaged farm task file)");
     std::uint64_t offset = headerSize;
     for (std::uint32_t i = 0; i < count; ++i) {
@@ -155,10 +148,10 @@ SectionReader TaskFile::section(std::size_t i) const {
     if (i >= sections_.size())
         throw Error(context + ": the file has " + std::to_string(sections_.size()) + " sections");
     const Section& s = sections_[i];
-    std::string bytes = readAt(path_, s.offset, s.size, "section " + std::to_string(i));
+    const std::string_view bytes = file_->bytes().substr(s.offset, s.size);
     if (checksum(bytes) != s.checksum)
         throw Error(context + ": checksum mismatch (a damaged farm task file; run the task again)");
-    return SectionReader(std::move(bytes), context);
+    return SectionReader(file_, bytes, context);
 }
 
 void TaskFile::verify() const {

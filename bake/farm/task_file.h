@@ -23,6 +23,7 @@
 namespace opal {
 
 class AtomicFileWriter;
+class MappedFile;
 
 // The bytes of one section, built field by field (little-endian).
 class SectionWriter {
@@ -83,7 +84,9 @@ private:
 // array longer than what is left throws opal::Error naming `context` and the field.
 class SectionReader {
 public:
-    SectionReader(std::string bytes, std::string context) : bytes_(std::move(bytes)), context_(std::move(context)) {}
+    // Reads `bytes`, which `file` keeps alive (the task file's mapping).
+    SectionReader(std::shared_ptr<const MappedFile> file, std::string_view bytes, std::string context)
+        : file_(std::move(file)), bytes_(bytes), context_(std::move(context)) {}
     std::uint32_t u32(std::string_view what) { return get<std::uint32_t>(what); }
     std::uint64_t u64(std::string_view what) { return get<std::uint64_t>(what); }
     double f64(std::string_view what) { return get<double>(what); }
@@ -97,7 +100,7 @@ public:
         at_ += count * sizeof(T);
         return values;
     }
-    // The next array in place: valid while this reader lives and is not moved.
+    // The next array in place: valid while this reader, or the TaskFile it came from, lives.
     template <class T>
     SectionArray<T> view(std::string_view what) {
         static_assert(std::is_arithmetic_v<T>);
@@ -121,7 +124,8 @@ private:
         at_ += sizeof v;
         return v;
     }
-    std::string bytes_;
+    std::shared_ptr<const MappedFile> file_;
+    std::string_view bytes_;
     std::string context_;
     std::size_t at_ = 0;
 };
@@ -148,13 +152,14 @@ private:
 // Writes `sections` as a task file at `path`, atomically.
 void writeTaskFile(const std::filesystem::path& path, std::span<const std::string> sections);
 
+// A task file mapped into memory (mapped_file.h): sections are read in place.
 class TaskFile {
 public:
-    // Opens the file and checks its header. Throws opal::Error naming the file.
+    // Maps the file and checks its header. Throws opal::Error naming the file.
     explicit TaskFile(std::filesystem::path path);
 
     std::size_t sections() const { return sections_.size(); }
-    // Reads section i and checks its XXH64.
+    // Section i, its XXH64 checked; its bytes stay mapped while the reader lives.
     SectionReader section(std::size_t i) const;
     // Reads and checks every section.
     void verify() const;
@@ -165,6 +170,7 @@ private:
         std::uint64_t offset, size, checksum;
     };
     std::filesystem::path path_;
+    std::shared_ptr<const MappedFile> file_;
     std::vector<Section> sections_;
 };
 
