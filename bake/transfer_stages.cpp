@@ -234,23 +234,43 @@ EnergyHistogram histogramOfColumns(const Step1Columns& columns, const ChartLayou
 
 KeptColumns keptColumns(const Step1Columns& columns, const ChartLayout& layout, const Step2Weights& weights,
                         std::size_t k, int minBin, const StageScope& stage, const CancelToken& cancel) {
+    // Chunks of consecutive columns, each kept into its own flat arrays in parallel, then
+    // joined in column order.
+    constexpr std::size_t kChunk = 256;
+    const std::size_t chunks = (columns.count() + kChunk - 1) / kChunk;
+    std::vector<KeptColumns> parts(chunks);
     auto scratch = columnScratch(layout.cells());
+    tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t chunk) {
+        cancel.throwIfRequested();
+        ColumnScratch& s = scratch.local();
+        KeptColumns& part = parts[chunk];
+        const std::size_t begin = columns.first + chunk * kChunk;
+        const std::size_t end = std::min(begin + kChunk, columns.first + columns.count());
+        for (std::size_t j = begin; j != end; ++j) {
+            transformColumn(columns, j, layout, weights.synthesisNorms, columnWeight(layout, weights, k, j), s.dense,
+                            s.charts, [&](std::size_t p, float c, float e) {
+                                if (energyBin(e) < minBin) return;
+                                part.p.push_back(std::uint32_t(p));
+                                part.value.push_back(c);
+                            });
+            part.offsets.push_back(part.p.size());
+        }
+        stage.advance(end - begin);
+    });
     KeptColumns kept;
     kept.first = columns.first;
-    kept.columns.resize(columns.count());
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(columns.first, columns.first + columns.count(), 256),
-                      [&](const auto& range) {
-                          cancel.throwIfRequested();
-                          ColumnScratch& s = scratch.local();
-                          for (std::size_t j = range.begin(); j != range.end(); ++j)
-                              transformColumn(columns, j, layout, weights.synthesisNorms,
-                                              columnWeight(layout, weights, k, j), s.dense, s.charts,
-                                              [&](std::size_t p, float c, float e) {
-                                                  if (energyBin(e) >= minBin)
-                                                      kept.columns[j - columns.first].push_back({std::uint32_t(p), c});
-                                              });
-                          stage.advance(range.size());
-                      });
+    std::size_t total = 0;
+    for (const KeptColumns& part : parts) total += part.p.size();
+    kept.offsets.reserve(columns.count() + 1);
+    kept.p.reserve(total);
+    kept.value.reserve(total);
+    for (KeptColumns& part : parts) {
+        const std::uint64_t base = kept.p.size();
+        for (std::size_t c = 1; c < part.offsets.size(); ++c) kept.offsets.push_back(base + part.offsets[c]);
+        kept.p.insert(kept.p.end(), part.p.begin(), part.p.end());
+        kept.value.insert(kept.value.end(), part.value.begin(), part.value.end());
+        part = KeptColumns{};
+    }
     return kept;
 }
 
@@ -260,13 +280,12 @@ KeptMatrixAssembler::KeptMatrixAssembler(std::size_t n) {
 }
 
 void KeptMatrixAssembler::count(const KeptColumns& block) {
-    for (const auto& column : block.columns)
-        for (const KeptEntry& e : column) {
-            if (e.p >= matrix_.rows)
-                throw Error("transfer step 2: kept coefficient at output " + std::to_string(e.p) + " of " +
-                            std::to_string(matrix_.rows));
-            ++matrix_.rowOffsets[e.p + 1];
-        }
+    for (const std::uint32_t p : block.p) {
+        if (p >= matrix_.rows)
+            throw Error("transfer step 2: kept coefficient at output " + std::to_string(p) + " of " +
+                        std::to_string(matrix_.rows));
+        ++matrix_.rowOffsets[p + 1];
+    }
 }
 
 void KeptMatrixAssembler::fill(const KeptColumns& block) {
@@ -277,14 +296,15 @@ void KeptMatrixAssembler::fill(const KeptColumns& block) {
         cursor_.assign(matrix_.rowOffsets.begin(), matrix_.rowOffsets.end() - 1);
         filling_ = true;
     }
-    for (std::size_t c = 0; c < block.columns.size(); ++c)
-        for (const KeptEntry& e : block.columns[c]) {
-            if (e.p >= matrix_.rows || cursor_[e.p] >= matrix_.rowOffsets[e.p + 1])
+    for (std::size_t c = 0; c < block.count(); ++c)
+        for (std::uint64_t e = block.offsets[c]; e < block.offsets[c + 1]; ++e) {
+            const std::uint32_t p = block.p[e];
+            if (p >= matrix_.rows || cursor_[p] >= matrix_.rowOffsets[p + 1])
                 throw Error("transfer step 2: the kept columns filled differ from the ones counted (output " +
-                            std::to_string(e.p) + ")");
-            const std::uint64_t at = cursor_[e.p]++;
+                            std::to_string(p) + ")");
+            const std::uint64_t at = cursor_[p]++;
             matrix_.columns[at] = std::uint32_t(block.first + c);
-            matrix_.values[at] = e.value;
+            matrix_.values[at] = block.value[e];
         }
 }
 

@@ -115,17 +115,16 @@ EnergyHistogram histogramOfColumns(const Step1Columns& columns, const ChartLayou
                                    const Step2Weights& weights, std::size_t k, const StageScope& stage,
                                    const CancelToken& cancel);
 
-// A kept 9/7 coefficient: output position p, value.
-struct KeptEntry {
-    std::uint32_t p;
-    float value;
-};
-
-// Step 2's second pass: per column (first .. first + columns.size() - 1), the
-// coefficients whose energy bin is at least minBin, p ascending.
+// Step 2's second pass: per column (first .. first + count() - 1), the coefficients whose
+// energy bin is at least minBin, p ascending, in flat arrays: column c's are the entries
+// offsets[c] .. offsets[c + 1] - 1 of p (output positions) and value.
 struct KeptColumns {
     std::size_t first = 0;
-    std::vector<std::vector<KeptEntry>> columns;
+    std::vector<std::uint64_t> offsets{0};
+    std::vector<std::uint32_t> p;
+    std::vector<float> value;
+
+    std::size_t count() const { return offsets.size() - 1; }
 };
 
 KeptColumns keptColumns(const Step1Columns& columns, const ChartLayout& layout, const Step2Weights& weights,

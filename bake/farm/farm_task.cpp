@@ -186,21 +186,14 @@ void runKeep(const TaskContext& c, std::uint32_t index, const CancelToken& cance
     for (std::size_t k = 0; k < c.plan.K(); ++k) {
         const KeptColumns kept =
             keptColumns(gatherBlock(c, rows, index, k), c.plan.layout, c.weights, k, minBin, stage, cancel);
-        std::vector<std::uint32_t> counts, p;
-        std::vector<float> values;
-        for (const auto& column : kept.columns) {
-            counts.push_back(std::uint32_t(column.size()));
-            for (const KeptEntry& e : column) {
-                p.push_back(e.p);
-                values.push_back(e.value);
-            }
-        }
+        std::vector<std::uint32_t> counts(kept.count());
+        for (std::size_t j = 0; j < counts.size(); ++j) counts[j] = std::uint32_t(kept.offsets[j + 1] - kept.offsets[j]);
         SectionWriter w;
-        w.reserve(4 * sizeof(std::uint64_t) + counts.size() * 4 + p.size() * 8);
+        w.reserve(4 * sizeof(std::uint64_t) + counts.size() * 4 + kept.p.size() * 8);
         w.u64(kept.first);
         w.array(counts);
-        w.array(p);
-        w.array(values);
+        w.array(kept.p);
+        w.array(kept.value);
         file.add(w.take());
     }
     passCrashPoints(FarmStage::Keep, index);
@@ -212,19 +205,21 @@ KeptColumns readKept(const TaskContext& c, std::uint32_t index, std::size_t k) {
     KeptColumns kept;
     kept.first = r.u64("first column");
     const auto counts = r.array<std::uint32_t>("counts");
-    const auto p = r.array<std::uint32_t>("outputs");
-    const auto values = r.array<float>("values");
+    auto p = r.array<std::uint32_t>("outputs");
+    auto values = r.array<float>("values");
     r.expectEnd();
     const auto [begin, end] = c.shard(index);
     if (kept.first != begin || counts.size() != end - begin || values.size() != p.size())
         r.fail("kept columns", "do not describe block " + std::to_string(begin) + ".." + std::to_string(end));
-    std::size_t at = 0;
-    kept.columns.resize(counts.size());
+    kept.offsets.resize(counts.size() + 1);
     for (std::size_t j = 0; j < counts.size(); ++j) {
-        if (counts[j] > p.size() - at) r.fail("counts", "exceed the " + std::to_string(p.size()) + " entries");
-        for (std::uint32_t e = 0; e < counts[j]; ++e, ++at) kept.columns[j].push_back({p[at], values[at]});
+        if (counts[j] > p.size() - kept.offsets[j])
+            r.fail("counts", "exceed the " + std::to_string(p.size()) + " entries");
+        kept.offsets[j + 1] = kept.offsets[j] + counts[j];
     }
-    if (at != p.size()) r.fail("counts", "leave entries over");
+    if (kept.offsets.back() != p.size()) r.fail("counts", "leave entries over");
+    kept.p = std::move(p);
+    kept.value = std::move(values);
     return kept;
 }
 
@@ -252,9 +247,14 @@ std::string runMerge(const TaskContext& c, const CancelToken& cancel) {
     TranslucentAsset asset = c.prepared.asset;
     asset.transfer = transferShell(c.plan, minBin, c.weights);
     for (std::size_t k = 0; k < c.plan.K(); ++k) {
+        std::vector<KeptColumns> blocks;  // one k's kept coefficients, read once
+        for (std::uint32_t s = 0; s < c.spec.shards; ++s) blocks.push_back(readKept(c, s, k));
         KeptMatrixAssembler matrix(c.plan.n());
-        for (std::uint32_t s = 0; s < c.spec.shards; ++s) matrix.count(readKept(c, s, k));
-        for (std::uint32_t s = 0; s < c.spec.shards; ++s) matrix.fill(readKept(c, s, k));
+        for (const KeptColumns& block : blocks) matrix.count(block);
+        for (KeptColumns& block : blocks) {
+            matrix.fill(block);
+            block = KeptColumns{};
+        }
         asset.transfer.perBasis.push_back(matrix.take());
     }
     BakeReport report;
