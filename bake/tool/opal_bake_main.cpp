@@ -11,6 +11,7 @@
 #include "bake/bake_pipeline.h"
 #include "bake/bake_report.h"
 #include "bake/procedural_mesh.h"
+#include "bake/tool/allocator_tuning.h"
 #include "bake/tool/baseline_math.h"
 #include "bake/tool/batch_command.h"
 #include "bake/tool/farm_command.h"
@@ -57,6 +58,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "opal-bake: error: %s\n", e.what());
         return 1;
     }
+    opal::keepAllocatorMemory();
     CLI::App app{"opal-bake: bake a mesh into a relightable translucent Opal asset"};
     opal::BakeOptions options;
     std::string outStem, jsonPath, range;
