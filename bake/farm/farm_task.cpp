@@ -57,39 +57,48 @@ std::vector<std::uint32_t> columnBlocks(const TaskContext& c) {
 }
 
 // rows-I.task: section k * N + c holds T_k's entries of rows shard I in column block c,
-// as (o, j, value) arrays in row order, zeros dropped:
-//   u64 count | o[count] (u32) | u64 count | j[count] (u32) | u64 count | value[count] (f32)
+// zeros dropped, row by row: how many each row of the shard has, then their columns and
+// values (each row's ascending):
+//   u64 rows | count[rows] (u32) | u64 n | j[n] (u32) | u64 n | value[n] (f32)
+// 8 bytes an entry (a row index per entry made it 12, and the rows files are what the
+// bake writes most: 7.9 GB at 65,536 samples).
 // One k's N sections are made together, in two passes over its rows (count each block's
 // entries, then place them) rather than four passes per block: the rows task's memory
-// beyond its rows is one k's entries, 12 bytes each, in `sections`, whose strings are
-// reused from k to k: their memory is touched once per task, not once per k (fresh pages
-// cost a page fault each).
+// beyond its rows is one k's entries, in `sections`, whose strings are reused from k to
+// k: their memory is touched once per task, not once per k (fresh pages cost a page
+// fault each).
 void rowsSections(const Step1Rows& rows, std::size_t firstRow, const std::vector<std::uint32_t>& blockOf,
                   std::uint32_t blocks, std::vector<std::string>& sections) {
-    std::vector<std::uint64_t> count(blocks, 0);
-    forEachRowEntry(rows, firstRow, [&](std::uint32_t, std::uint32_t j, float v) {
-        if (v != 0.0f) ++count[blockOf[j]];
+    const std::uint64_t rowCount = rows.perRow == 0 ? 0 : rows.column.size() / rows.perRow;
+    std::vector<std::uint64_t> total(blocks, 0);
+    std::vector<std::uint32_t> perRow(std::size_t(blocks) * rowCount, 0);  // [block][row]
+    forEachRowEntry(rows, firstRow, [&](std::uint32_t o, std::uint32_t j, float v) {
+        if (v == 0.0f) return;
+        ++total[blockOf[j]];
+        ++perRow[blockOf[j] * rowCount + (o - firstRow)];
     });
     sections.resize(blocks);
     struct Cursor {
-        char *o, *j, *v;
+        char *j, *v;
     };
     std::vector<Cursor> at(blocks);
     for (std::uint32_t b = 0; b < blocks; ++b) {
-        const std::uint64_t n = count[b];
+        const std::uint64_t n = total[b];
+        const std::uint64_t countsBytes = 8 + 4 * rowCount;
         sections[b].clear();
-        sections[b].resize(3 * sizeof(std::uint64_t) + n * 12);
+        sections[b].resize(countsBytes + 16 + n * 8);
         char* const base = sections[b].data();
-        for (std::uint64_t offset : {std::uint64_t(0), 8 + 4 * n, 16 + 8 * n}) std::memcpy(base + offset, &n, 8);
-        at[b] = {base + 8, base + 16 + 4 * n, base + 24 + 8 * n};
+        std::memcpy(base, &rowCount, 8);
+        std::memcpy(base + 8, perRow.data() + b * rowCount, 4 * rowCount);
+        std::memcpy(base + countsBytes, &n, 8);
+        std::memcpy(base + countsBytes + 8 + 4 * n, &n, 8);
+        at[b] = {base + countsBytes + 8, base + countsBytes + 16 + 4 * n};
     }
-    forEachRowEntry(rows, firstRow, [&](std::uint32_t o, std::uint32_t j, float v) {
+    forEachRowEntry(rows, firstRow, [&](std::uint32_t, std::uint32_t j, float v) {
         if (v == 0.0f) return;
         Cursor& cursor = at[blockOf[j]];
-        std::memcpy(cursor.o, &o, 4);
         std::memcpy(cursor.j, &j, 4);
         std::memcpy(cursor.v, &v, 4);
-        cursor.o += 4;
         cursor.j += 4;
         cursor.v += 4;
     });
@@ -128,25 +137,33 @@ Step1Columns gatherBlock(const TaskContext& c, const std::vector<TaskFile>& rows
     // T_k's entries of the block from every rows shard, visited in place in the mapped
     // files (the block's columns are what the task holds).
     struct Entries {
-        SectionArray<std::uint32_t> o, j;
+        std::uint32_t firstRow;
+        SectionArray<std::uint32_t> count, j;
         SectionArray<float> v;
     };
     std::vector<Entries> pieces;
     for (std::uint32_t s = 0; s < c.spec.shards; ++s) {
         SectionReader r = rows[s].section(k * c.spec.shards + index);
-        const Entries& e = pieces.emplace_back(
-            Entries{r.view<std::uint32_t>("rows"), r.view<std::uint32_t>("columns"), r.view<float>("values")});
+        const auto [rowBegin, rowEnd] = c.shard(s);
+        const Entries& e = pieces.emplace_back(Entries{std::uint32_t(rowBegin), r.view<std::uint32_t>("row counts"),
+                                                       r.view<std::uint32_t>("columns"), r.view<float>("values")});
         r.expectEnd();
-        if (e.j.size() != e.o.size() || e.v.size() != e.o.size())
-            r.fail("entries", "differ in count (" + std::to_string(e.o.size()) + " rows, " +
+        if (e.count.size() != rowEnd - rowBegin)
+            r.fail("row counts", "hold " + std::to_string(e.count.size()) + " rows, the shard has " +
+                                     std::to_string(rowEnd - rowBegin));
+        std::uint64_t entries = 0;
+        for (std::size_t i = 0; i < e.count.size(); ++i) entries += e.count[i];
+        if (e.j.size() != entries || e.v.size() != entries)
+            r.fail("entries", "differ in count (" + std::to_string(entries) + " by the rows, " +
                                   std::to_string(e.j.size()) + " columns, " + std::to_string(e.v.size()) + " values)");
-        for (std::size_t i = 0; i < e.o.size(); ++i)
-            if (e.o[i] >= c.plan.n() || e.j[i] < begin || e.j[i] >= end)
-                r.fail("entry " + std::to_string(i), "is outside the matrix or the block");
+        for (std::size_t i = 0; i < e.j.size(); ++i)
+            if (e.j[i] < begin || e.j[i] >= end) r.fail("entry " + std::to_string(i), "is outside the block");
     }
     return gatherColumns(begin, end, [&](auto&& visit) {
         for (const Entries& e : pieces)
-            for (std::size_t i = 0; i < e.o.size(); ++i) visit(e.o[i], e.j[i], e.v[i]);
+            for (std::size_t r = 0, i = 0; r < e.count.size(); ++r)
+                for (const std::size_t rowEnd = i + e.count[r]; i < rowEnd; ++i)
+                    visit(std::uint32_t(e.firstRow + r), e.j[i], e.v[i]);
     });
 }
 

@@ -13,8 +13,8 @@ namespace {
 
 constexpr std::string_view kMagic = "OPALTASK";
 // 2: the environment error in the options and the asset; 3: columns files hold the
-// histogram alone
-constexpr std::uint32_t kVersion = 3;
+// histogram alone; 4: rows sections count entries per row instead of naming each one's row
+constexpr std::uint32_t kVersion = 4;
 constexpr std::uint32_t kMaxSections = 1u << 20;
 
 std::uint64_t checksum(std::string_view bytes) { return xxh64(std::as_bytes(std::span(bytes.data(), bytes.size()))); }
