@@ -1,6 +1,7 @@
 // Farm task files (bake/farm/task_file.h): arrays read back by copy and in place are the
 // values written, at any alignment the fields before them leave, and a count that runs
-// past the section is refused naming the file, the section and the field.
+// past the section is refused naming the file, the section and the field; sections read
+// from the mapped file outlive the TaskFile; files that are no task file are refused.
 #include "bake/farm/task_file.h"
 #include "schema/error.h"
 
@@ -9,7 +10,10 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <filesystem>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace opal {
@@ -51,6 +55,45 @@ TEST(TaskFile, AnArrayLongerThanItsSectionIsRefusedByName) {
         const std::string message = e.what();
         EXPECT_NE(message.find("a.task: section 0"), std::string::npos) << message;
         EXPECT_NE(message.find("values holds 1000 values"), std::string::npos) << message;
+    }
+}
+
+TEST(TaskFile, ASectionStaysReadableAfterItsFileObjectIsGone) {
+    const test::ScratchDir dir;
+    SectionWriter w;
+    w.array(std::vector<float>{1.5f, 2.5f});
+    writeTaskFile(dir / "a.task", std::vector<std::string>{w.take()});
+    std::optional<SectionReader> r;
+    {
+        const TaskFile file(dir / "a.task");
+        r.emplace(file.section(0));
+    }
+    const SectionArray<float> v = r->view<float>("values");  // the mapping lives with the reader
+    ASSERT_EQ(v.size(), 2u);
+    EXPECT_EQ(v[1], 2.5f);
+}
+
+TEST(TaskFile, AnEmptyFileAShortHeaderOrAFolderIsRefusedNamingIt) {
+    const test::ScratchDir dir;
+    writeTaskFile(dir / "whole.task", std::vector<std::string>{"a section"});
+    const std::string bytes = test::readBytes(dir / "whole.task");
+    test::writeText(dir / "empty.task", "");
+    test::writeText(dir / "short.task", bytes.substr(0, 20));  // magic, version, count; no sizes
+    std::filesystem::create_directories(dir / "folder.task");
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"empty.task", "not a farm task file"},
+        {"short.task", "the header is cut short"},
+        {"folder.task", "not a regular file"},
+        {"missing.task", "cannot read the farm task file"}};
+    for (const auto& [name, problem] : cases) {
+        try {
+            (void)TaskFile(dir / name);
+            ADD_FAILURE() << name << " was opened";
+        } catch (const Error& e) {
+            const std::string message = e.what();
+            EXPECT_NE(message.find((dir / name).string() + ": "), std::string::npos) << message;
+            EXPECT_NE(message.find(problem), std::string::npos) << message;
+        }
     }
 }
 
