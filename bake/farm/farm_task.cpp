@@ -67,9 +67,8 @@ std::vector<std::uint32_t> columnBlocks(const TaskContext& c) {
 // beyond its rows is one k's entries, in `sections`, whose strings are reused from k to
 // k: their memory is touched once per task, not once per k (fresh pages cost a page
 // fault each).
-void rowsSections(const Step1Rows& rows, std::size_t firstRow, const std::vector<std::uint32_t>& blockOf,
-                  std::uint32_t blocks, std::vector<std::string>& sections) {
-    const std::uint64_t rowCount = rows.perRow == 0 ? 0 : rows.column.size() / rows.perRow;
+void rowsSections(const Step1Rows& rows, std::size_t firstRow, std::uint64_t rowCount,
+                  const std::vector<std::uint32_t>& blockOf, std::uint32_t blocks, std::vector<std::string>& sections) {
     std::vector<std::uint64_t> total(blocks, 0);
     std::vector<std::uint32_t> perRow(std::size_t(blocks) * rowCount, 0);  // [block][row]
     forEachRowEntry(rows, firstRow, [&](std::uint32_t o, std::uint32_t j, float v) {
@@ -115,7 +114,7 @@ void runRows(const TaskContext& c, std::uint32_t index, const CancelToken& cance
     const std::vector<std::uint32_t> blockOf = columnBlocks(c);
     std::vector<std::string> sections;
     for (Step1Rows& k : rows) {
-        rowsSections(k, begin, blockOf, c.spec.shards, sections);
+        rowsSections(k, begin, end - begin, blockOf, c.spec.shards, sections);
         for (const std::string& section : sections) file.add(section);
         k = Step1Rows{};
     }
