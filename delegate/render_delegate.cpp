@@ -98,6 +98,7 @@ std::map<hd::Token, hd::Value> OpalRenderDelegate::renderStats() const {
     stats["commitMs"] = lastCommit_.totalMs;
     stats["rayScenesMs"] = lastCommit_.rayScenesMs;
     stats["irradianceMs"] = lastCommit_.irradianceMs;
+    stats["lightMomentsMs"] = lastCommit_.lightMomentsMs;
     stats["productsMs"] = lastCommit_.productsMs;
     stats["materialMs"] = lastCommit_.materialMs;
     stats["referenceMs"] = lastCommit_.referenceMs;

@@ -62,6 +62,7 @@ TEST(Sync, AMaterialEditRecomputesNeitherIrradianceNorProducts) {
     EXPECT_EQ(stat(s.delegate, "materialUpdates"), 3);     // A only: B uses its asset's default
     EXPECT_EQ(stat(s.delegate, "rayScenes"), 1);
     EXPECT_EQ(std::get<double>(s.delegate.renderStats().at("irradianceMs")), 0.0);
+    EXPECT_EQ(std::get<double>(s.delegate.renderStats().at("lightMomentsMs")), 0.0);
     EXPECT_EQ(std::get<double>(s.delegate.renderStats().at("productsMs")), 0.0);
     EXPECT_GT(std::get<double>(s.delegate.renderStats().at("materialMs")), 0.0);
 
@@ -98,6 +99,9 @@ TEST(Sync, ALightEditPullsAndRecomputesThatLightOnly) {
     EXPECT_EQ(stat(s.delegate, "irradianceProducts"), 2 + 2);
     EXPECT_EQ(stat(s.delegate, "materialUpdates"), 2);  // no material work
     EXPECT_EQ(stat(s.delegate, "rayScenes"), 1);
+    const double moments = std::get<double>(s.delegate.renderStats().at("lightMomentsMs"));
+    EXPECT_GT(moments, 0.0);  // the key light's moments, part of the irradiance time
+    EXPECT_LE(moments, std::get<double>(s.delegate.renderStats().at("irradianceMs")));
 
     // Moving a light is the same.
     s.scene.lights["/World/Rim"].transform = test::translation(0, -8, -20);
