@@ -122,10 +122,10 @@ void runRows(const TaskContext& c, std::uint32_t index, const CancelToken& cance
     file.commit();
 }
 
-// Every rows shard's file, mapped once for all k.
-std::vector<TaskFile> rowsFiles(const TaskContext& c) {
+// Every task's file of `stage` (rows or keep: one per shard), mapped once for all k.
+std::vector<TaskFile> stageFiles(const TaskContext& c, FarmStage stage) {
     std::vector<TaskFile> files;
-    for (std::uint32_t s = 0; s < c.spec.shards; ++s) files.emplace_back(c.folder.output(FarmStage::Rows, s));
+    for (std::uint32_t s = 0; s < c.spec.shards; ++s) files.emplace_back(c.folder.output(stage, s));
     return files;
 }
 
@@ -172,7 +172,7 @@ void runColumns(const TaskContext& c, std::uint32_t index, const CancelToken& ca
     // One section: the histogram. The block's columns are not written: the keep task
     // gathers them again from the rows shards, which costs less than writing and reading
     // them back (the whole step-1 matrix, once more, across the columns files).
-    const std::vector<TaskFile> rows = rowsFiles(c);
+    const std::vector<TaskFile> rows = stageFiles(c, FarmStage::Rows);
     for (std::size_t k = 0; k < c.plan.K(); ++k)
         histogram.add(histogramOfColumns(gatherBlock(c, rows, index, k), c.plan.layout, c.weights, k, stage, cancel));
     TaskFileWriter file(c.folder.output(FarmStage::Columns, index), 1);
@@ -198,7 +198,7 @@ void runKeep(const TaskContext& c, std::uint32_t index, const CancelToken& cance
     const int minBin = allEnergies(c).thresholdBin(c.plan.settings.energyFraction);
     const StageScope stage(nullptr, "", 0);
     TaskFileWriter file(c.folder.output(FarmStage::Keep, index), c.plan.K());
-    const std::vector<TaskFile> rows = rowsFiles(c);
+    const std::vector<TaskFile> rows = stageFiles(c, FarmStage::Rows);
     for (std::size_t k = 0; k < c.plan.K(); ++k) {
         const KeptColumns kept =
             keptColumns(gatherBlock(c, rows, index, k), c.plan.layout, c.weights, k, minBin, stage, cancel);
@@ -216,8 +216,8 @@ void runKeep(const TaskContext& c, std::uint32_t index, const CancelToken& cance
     file.commit();
 }
 
-KeptColumns readKept(const TaskContext& c, std::uint32_t index, std::size_t k) {
-    SectionReader r = TaskFile(c.folder.output(FarmStage::Keep, index)).section(k);
+KeptColumns readKept(const TaskContext& c, const TaskFile& file, std::uint32_t index, std::size_t k) {
+    SectionReader r = file.section(k);
     KeptColumns kept;
     kept.first = r.u64("first column");
     const auto counts = r.array<std::uint32_t>("counts");
@@ -262,9 +262,10 @@ std::string runMerge(const TaskContext& c, const CancelToken& cancel) {
     const int minBin = all.thresholdBin(c.plan.settings.energyFraction);
     TranslucentAsset asset = c.prepared.asset;
     asset.transfer = transferShell(c.plan, minBin, c.weights);
+    const std::vector<TaskFile> kept = stageFiles(c, FarmStage::Keep);
     for (std::size_t k = 0; k < c.plan.K(); ++k) {
         std::vector<KeptColumns> blocks;  // one k's kept coefficients, read once
-        for (std::uint32_t s = 0; s < c.spec.shards; ++s) blocks.push_back(readKept(c, s, k));
+        for (std::uint32_t s = 0; s < c.spec.shards; ++s) blocks.push_back(readKept(c, kept[s], s, k));
         KeptMatrixAssembler matrix(c.plan.n());
         for (const KeptColumns& block : blocks) matrix.count(block);
         for (KeptColumns& block : blocks) {

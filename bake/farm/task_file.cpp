@@ -1,11 +1,11 @@
 #include "bake/farm/task_file.h"
 
 #include "bake/farm/mapped_file.h"
-
 #include "schema/asset/xxhash64.h"
 #include "schema/error.h"
 #include "schema/usd/atomic_file.h"
 
+#include <algorithm>
 
 namespace opal {
 
