@@ -85,7 +85,8 @@ void expectProductMatches(const CompressedTransfer& t, std::size_t lanes, std::s
 // Each kernel this CPU has (the portable one always).
 std::vector<TransferProduct::Kernel> kernels() {
     std::vector<TransferProduct::Kernel> all{TransferProduct::Kernel::Portable};
-    if (TransferProduct::kernelAvailable(TransferProduct::Kernel::Avx2)) all.push_back(TransferProduct::Kernel::Avx2);
+    for (TransferProduct::Kernel kernel : {TransferProduct::Kernel::Avx2, TransferProduct::Kernel::Avx512})
+        if (TransferProduct::kernelAvailable(kernel)) all.push_back(kernel);
     return all;
 }
 
@@ -111,6 +112,28 @@ TEST(NormalHalfToFloat, EqualsImathForEveryNormalHalf) {
 
 TEST(TransferProduct, MatchesTheExactProductForEveryLaneWidth) {
     const CompressedTransfer t = randomTransfer(256, 3);
+    expectProductMatches(t, 4, 3);
+    expectProductMatches(t, 8, 6);
+    expectProductMatches(t, 12, 9);
+}
+
+// Row r holds r mod 22 entries: empty rows, rows shorter than a vector's 8 values, and
+// whole vectors with every tail length after them.
+TEST(TransferProduct, MatchesTheExactProductForRowsOfEveryLength) {
+    CompressedTransfer t;
+    for (std::uint32_t k = 0; k < 2; ++k) {
+        const SparseMatrix full = randomMatrix(264, 22, 3.0, 31 + k);
+        SparseMatrix m;
+        m.rows = m.cols = full.rows;
+        m.rowOffsets.push_back(0);
+        for (std::uint32_t r = 0; r < full.rows; ++r) {
+            const std::uint64_t begin = full.rowOffsets[r], count = r % 22;
+            m.columns.insert(m.columns.end(), full.columns.begin() + begin, full.columns.begin() + begin + count);
+            m.values.insert(m.values.end(), full.values.begin() + begin, full.values.begin() + begin + count);
+            m.rowOffsets.push_back(m.values.size());
+        }
+        t.perBasis.push_back(std::move(m));
+    }
     expectProductMatches(t, 4, 3);
     expectProductMatches(t, 8, 6);
     expectProductMatches(t, 12, 9);
@@ -157,9 +180,10 @@ TEST(TransferProduct, ValuesKeepElevenSignificantBitsAndDropOnlyTheNegligible) {
 TEST(TransferProduct, BestIsTheFastestKernelTheCpuHas) {
     const CompressedTransfer t = randomTransfer(32, 1);
     EXPECT_EQ(TransferProduct(t, 32).kernel(), kernels().back());
-    if (!TransferProduct::kernelAvailable(TransferProduct::Kernel::Avx2)) {
-        EXPECT_THROW(TransferProduct(t, 32, TransferProduct::Kernel::Avx2), Error);
-    }
+    for (TransferProduct::Kernel kernel : {TransferProduct::Kernel::Avx2, TransferProduct::Kernel::Avx512})
+        if (!TransferProduct::kernelAvailable(kernel)) {
+            EXPECT_THROW(TransferProduct(t, 32, kernel), Error);
+        }
 }
 
 TEST(TransferProduct, RejectsInconsistentMatrices) {
