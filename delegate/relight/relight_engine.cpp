@@ -1,6 +1,7 @@
 #include "delegate/relight/relight_engine.h"
 
 #include "delegate/relight/float4.h"
+#include "delegate/relight/vertex_gather.h"
 #include "schema/asset/self_term.h"
 #include "schema/error.h"
 #include "schema/scatter/fresnel_moments.h"
@@ -9,6 +10,7 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 
 #include <algorithm>
 #include <atomic>
@@ -23,6 +25,7 @@ namespace opal {
 namespace {
 
 constexpr std::uint32_t kRowsPerTask = 256;
+constexpr std::size_t kValuesPerTask = 32768;  // per-sample passes over samples x 3 floats
 
 
 void checkAsset(const TranslucentAsset& asset) {
@@ -48,12 +51,50 @@ TransferProduct checkedTransfer(const std::shared_ptr<const TranslucentAsset>& a
     return TransferProduct(asset->transfer, asset->samples.size());
 }
 
+// values[i] = max(0, update(i, values[i])) in one parallel pass: how many were negative and
+// how deep (zeroNegatives), and whether every updated value was finite (sum v * 0 is 0
+// exactly when every v is, and vectorizes).
+struct Projected {
+    RelightEngine::NegativeNoise noise;
+    bool finite = true;
+};
+
+template <typename Update>
+Projected projectNonNegative(std::span<float> values, const Update& update) {
+    struct Extremes {
+        float lowest = 0.0f, highest = 0.0f, zero = 0.0f;
+        std::uint64_t count = 0;
+    };
+    const Extremes e = tbb::parallel_reduce(
+        tbb::blocked_range<std::size_t>(0, values.size(), kValuesPerTask), Extremes{},
+        [&](const tbb::blocked_range<std::size_t>& r, Extremes so) {
+            for (std::size_t i = r.begin(); i != r.end(); ++i) {
+                const float v = update(i, values[i]);
+                so.zero += v * 0.0f;
+                so.highest = std::max(so.highest, v);
+                so.lowest = std::min(so.lowest, v);
+                so.count += v < 0.0f;
+                values[i] = std::max(v, 0.0f);
+            }
+            return so;
+        },
+        [](Extremes a, const Extremes& b) {
+            a.lowest = std::min(a.lowest, b.lowest);
+            a.highest = std::max(a.highest, b.highest);
+            a.zero += b.zero;
+            a.count += b.count;
+            return a;
+        });
+    return {{e.count, e.highest > 0.0f ? double(e.lowest) / double(e.highest) : 0.0}, e.zero == 0.0f};
+}
+
 }  // namespace
 
 RelightEngine::RelightEngine(std::shared_ptr<const TranslucentAsset> asset)
     : asset_(std::move(asset)),
       product_(checkedTransfer(asset_)),
-      projection_(asset_->basis, profileFitRadius(*asset_)) {
+      projection_(asset_->basis, profileFitRadius(*asset_)),
+      gather_(asset_->vertexWeights, asset_->samples.size()) {
     samples_ = asset_->samples.size();
     K_ = asset_->transfer.perBasis.size();
     paddedK_ = (K_ + 3) / 4 * 4;
@@ -133,18 +174,6 @@ void RelightEngine::weighProducts(bool reweigh, std::size_t begin, std::size_t e
     }
 }
 
-// Lights are bounded (light_emission.h) so that every sum stays finite for transfer values
-// a bake can produce; a sidecar whose values are finite but absurd (damaged, or written by
-// something else) could still overflow, and must not reach an image as NaN or infinity.
-// sum v * 0 is 0 exactly when every v is finite, and vectorizes (a few microseconds).
-void RelightEngine::requireFinite(std::span<const float> radiance) const {
-    float zero = 0.0f;
-    for (float v : radiance) zero += v * 0.0f;
-    if (zero != 0.0f)
-        throw Error("asset '" + asset_->name +
-                    "': the relit radiance is not finite: the sidecar's transfer values are out of range (re-bake it)");
-}
-
 // L = w1^-1 ((1/pi) sum_k s_k z_k), per channel; then the render-mesh vertices, and E(eta).
 void RelightEngine::formRadiance(bool reweigh) {
     radiance_.resize(samples_ * 3);
@@ -158,25 +187,32 @@ void RelightEngine::formRadiance(bool reweigh) {
         irradiance_ = moments_.combine(fresnel_);
         irradianceNoise_ = zeroNegatives(irradiance_);
     }
-    addSelfTerm();
-    requireFinite(radiance_);
-    radianceNoise_ = zeroNegatives(radiance_);
-    const VertexWeights& weights = asset_->vertexWeights;
+    radianceNoise_ = addSelfTermAndProject();
     if (vertexRadiance_.use_count() > 1) {
         std::shared_ptr<std::vector<float>> next = spareVertexRadiance_ && spareVertexRadiance_.use_count() == 1
                                                        ? std::move(spareVertexRadiance_)
                                                        : std::make_shared<std::vector<float>>();
         spareVertexRadiance_ = std::exchange(vertexRadiance_, std::move(next));
     }
-    vertexRadiance_->resize(weights.offsets.empty() ? 0 : (weights.offsets.size() - 1) * 3);
-    if (!vertexRadiance_->empty()) interpolateToVertices(weights, radiance_, *vertexRadiance_, &padded_);
+    vertexRadiance_->resize(gather_.vertices() * 3);
+    if (!vertexRadiance_->empty()) gather_.apply(radiance_, *vertexRadiance_, padded_);
 }
 
 // L(x_o) += (1/pi) R_disk(rho_o; sigma) E(x_o; eta), in the sample domain (after the 9/7
-// inverse): the self term the bake left out of the transfer (docs/ARCHITECTURE.md#self-term).
-void RelightEngine::addSelfTerm() {
-    if (self_.empty()) return;
-    for (std::size_t i = 0; i < samples_ * 3; ++i) radiance_[i] += self_[i] * irradiance_[i];
+// inverse): the self term the bake left out of the transfer (docs/ARCHITECTURE.md#self-term);
+// then L = max(0, L) in the same pass.
+// Lights are bounded (light_emission.h) so that every sum stays finite for transfer values
+// a bake can produce; a sidecar whose values are finite but absurd (damaged, or written by
+// something else) could still overflow, and must not reach an image as NaN or infinity.
+RelightEngine::NegativeNoise RelightEngine::addSelfTermAndProject() {
+    const float* self = self_.empty() ? nullptr : self_.data();
+    const float* irradiance = irradiance_.data();
+    const Projected projected = self ? projectNonNegative(radiance_, [=](std::size_t i, float v) { return v + self[i] * irradiance[i]; })
+                                     : projectNonNegative(radiance_, [](std::size_t, float v) { return v; });
+    if (!projected.finite)
+        throw Error("asset '" + asset_->name +
+                    "': the relit radiance is not finite: the sidecar's transfer values are out of range (re-bake it)");
+    return projected.noise;
 }
 
 // Radiance is never negative, and neither is the exact L at any sample: a nonnegative
@@ -188,52 +224,12 @@ void RelightEngine::addSelfTerm() {
 // moves every value toward the truth, never away; the count and the depth stay visible
 // (docs/ARCHITECTURE.md#nonnegative-radiance).
 RelightEngine::NegativeNoise zeroNegatives(std::span<float> values) {
-    float lowest = 0.0f, highest = 0.0f;
-    std::uint64_t count = 0;
-    for (float& v : values) {
-        highest = std::max(highest, v);
-        lowest = std::min(lowest, v);
-        count += v < 0.0f;
-        v = std::max(v, 0.0f);
-    }
-    return {count, highest > 0.0f ? double(lowest) / double(highest) : 0.0};
+    return projectNonNegative(values, [](std::size_t, float v) { return v; }).noise;
 }
 
-void interpolateToVertices(const VertexWeights& weights, std::span<const float> perSample, std::span<float> out,
-                           std::vector<Float4>* scratch) {
-    const std::size_t vertices = weights.offsets.empty() ? 0 : weights.offsets.size() - 1;
-    if (out.size() != vertices * 3 || weights.samples.size() != weights.weights.size() ||
-        (vertices > 0 && weights.offsets.back() != weights.samples.size()))
-        throw Error("vertex weights: inconsistent sizes (" + std::to_string(vertices) + " vertices, " +
-                    std::to_string(weights.samples.size()) + " entries, " + std::to_string(out.size()) +
-                    " output values)");
-    // The samples' RGB padded to four lanes: one aligned load per weight. The gathers are
-    // what this costs (1.1 million at 65,536 samples and 139,330 vertices), not the sums.
-    const std::size_t samples = perSample.size() / 3;
-    std::vector<Float4> local;
-    std::vector<Float4>& padded = scratch ? *scratch : local;
-    padded.resize(samples);
-    for (std::size_t i = 0; i < samples; ++i)
-        padded[i] = Float4{perSample[3 * i], perSample[3 * i + 1], perSample[3 * i + 2], 0.0f};
-    std::atomic<bool> outOfRange = false;
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, vertices, 4096), [&](const tbb::blocked_range<std::size_t>& r) {
-        const std::uint32_t* sample = weights.samples.data();
-        const float* weight = weights.weights.data();
-        bool bad = false;
-        for (std::size_t v = r.begin(); v != r.end(); ++v) {
-            Float4 sum = {};
-            for (std::uint32_t e = weights.offsets[v]; e < weights.offsets[v + 1]; ++e) {
-                const std::uint32_t s = sample[e];
-                bad |= s >= samples;
-                sum += weight[e] * padded[s < samples ? s : 0];
-            }
-            out[3 * v] = sum[0];
-            out[3 * v + 1] = sum[1];
-            out[3 * v + 2] = sum[2];
-        }
-        if (bad) outOfRange = true;
-    });
-    if (outOfRange) throw Error("vertex weights: a sample index is not below the " + std::to_string(samples) + " samples");
+void interpolateToVertices(const VertexWeights& weights, std::span<const float> perSample, std::span<float> out) {
+    std::vector<Float4> scratch;
+    VertexGather(weights, perSample.size() / 3).apply(perSample, out, scratch);
 }
 
 namespace {
@@ -248,7 +244,8 @@ std::size_t bytesOf(const std::vector<T>& v) {
 std::size_t RelightEngine::memoryBytes() const {
     return product_.memoryBytes() + bytesOf(moments_.values) + bytesOf(haar_) + bytesOf(products_) +
            bytesOf(weighted_) + bytesOf(fresnel_) + bytesOf(profile_) + bytesOf(self_) + bytesOf(radiance_) + bytesOf(irradiance_) +
-           bytesOf(*vertexRadiance_) + (spareVertexRadiance_ ? bytesOf(*spareVertexRadiance_) : 0) + bytesOf(padded_);
+           bytesOf(*vertexRadiance_) + (spareVertexRadiance_ ? bytesOf(*spareVertexRadiance_) : 0) + bytesOf(padded_) +
+           gather_.memoryBytes();
 }
 
 }  // namespace opal

@@ -21,6 +21,7 @@
 #include "delegate/relight/float4.h"
 #include "delegate/relight/irradiance.h"
 #include "delegate/relight/transfer_product.h"
+#include "delegate/relight/vertex_gather.h"
 #include "schema/asset/translucent_asset.h"
 #include "schema/scatter/profile_projection.h"
 
@@ -72,9 +73,8 @@ public:
 
 private:
     void formRadiance(bool reweigh);  // L = w1^-1 ((1/pi) sum_k s_k z_k), then the vertices
-    void requireFinite(std::span<const float> radiance) const;
     void weighProducts(bool reweigh, std::size_t begin, std::size_t end);
-    void addSelfTerm();
+    NegativeNoise addSelfTermAndProject();  // + the self term, then max(0, L); throws unless finite
 
     std::shared_ptr<const TranslucentAsset> asset_;
     TransferProduct product_;        // the transfer, compact for y_k (transfer_product.h)
@@ -94,18 +94,17 @@ private:
     NegativeNoise radianceNoise_, irradianceNoise_;
     std::shared_ptr<std::vector<float>> vertexRadiance_ = std::make_shared<std::vector<float>>();
     std::shared_ptr<std::vector<float>> spareVertexRadiance_;
-    std::vector<Float4> padded_;     // interpolateToVertices' scratch
+    VertexGather gather_;            // the render-mesh vertices' weights, in cache-friendly order
+    std::vector<Float4> padded_;     // gather_'s scratch
 };
 
 // Sets every negative value to zero: how many there were and the lowest as a fraction of
 // the highest value (docs/ARCHITECTURE.md#nonnegative-radiance).
 RelightEngine::NegativeNoise zeroNegatives(std::span<float> values);
 
-// Per render-mesh vertex, sum_j w_j value[sample_j] (RGB): the asset's VertexWeights.
-// out: vertices x 3. Throws opal::Error on inconsistent sizes.
-// scratch (optional) holds the samples padded to four lanes between calls, so that a caller
-// interpolating on every edit allocates nothing (fresh megabytes cost page faults).
-void interpolateToVertices(const VertexWeights& weights, std::span<const float> perSample, std::span<float> out,
-                           std::vector<Float4>* scratch = nullptr);
+// Per render-mesh vertex, sum_j w_j value[sample_j] (RGB): the asset's VertexWeights, once
+// (an engine keeps its VertexGather for every edit). out: vertices x 3. Throws opal::Error
+// on inconsistent sizes or an out-of-range sample.
+void interpolateToVertices(const VertexWeights& weights, std::span<const float> perSample, std::span<float> out);
 
 }  // namespace opal

@@ -1,0 +1,103 @@
+#include "delegate/relight/vertex_gather.h"
+
+#include "schema/error.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <numeric>
+#include <string>
+
+namespace opal {
+
+namespace {
+
+void checkWeights(const VertexWeights& weights, std::size_t samples) {
+    const std::size_t vertices = weights.offsets.empty() ? 0 : weights.offsets.size() - 1;
+    if (weights.samples.size() != weights.weights.size() || (vertices > 0 && weights.offsets.back() != weights.samples.size()) ||
+        (vertices > 0 && weights.offsets.front() != 0))
+        throw Error("vertex weights: inconsistent sizes (" + std::to_string(vertices) + " vertices, " +
+                    std::to_string(weights.samples.size()) + " sample indices, " + std::to_string(weights.weights.size()) +
+                    " weights)");
+    for (std::size_t v = 0; v < vertices; ++v)
+        if (weights.offsets[v] > weights.offsets[v + 1])
+            throw Error("vertex weights: vertex " + std::to_string(v) + "'s offsets decrease");
+    for (std::uint32_t s : weights.samples)
+        if (s >= samples)
+            throw Error("vertex weights: a sample index is not below the " + std::to_string(samples) + " samples");
+}
+
+// The sample a vertex leans on most (its first on a tie; 0 for a vertex without weights).
+std::uint32_t heaviestSample(const VertexWeights& weights, std::size_t v) {
+    std::uint32_t best = 0;
+    float bestWeight = -1.0f;
+    for (std::uint32_t e = weights.offsets[v]; e < weights.offsets[v + 1]; ++e)
+        if (weights.weights[e] > bestWeight) {
+            bestWeight = weights.weights[e];
+            best = weights.samples[e];
+        }
+    return best;
+}
+
+}  // namespace
+
+VertexGather::VertexGather(const VertexWeights& weights, std::size_t samples) : samples_(samples) {
+    checkWeights(weights, samples);
+    const std::size_t vertices = weights.offsets.empty() ? 0 : weights.offsets.size() - 1;
+    std::vector<std::uint32_t> key(vertices);
+    for (std::size_t v = 0; v < vertices; ++v) key[v] = heaviestSample(weights, v);
+    vertex_.resize(vertices);
+    std::iota(vertex_.begin(), vertex_.end(), 0u);
+    std::stable_sort(vertex_.begin(), vertex_.end(), [&](std::uint32_t a, std::uint32_t b) { return key[a] < key[b]; });
+    offsets_.reserve(vertices + 1);
+    offsets_.push_back(0);
+    sample_.reserve(weights.samples.size());
+    weight_.reserve(weights.weights.size());
+    for (std::uint32_t v : vertex_) {
+        for (std::uint32_t e = weights.offsets[v]; e < weights.offsets[v + 1]; ++e) {
+            sample_.push_back(weights.samples[e]);
+            weight_.push_back(weights.weights[e]);
+        }
+        offsets_.push_back(std::uint32_t(sample_.size()));
+    }
+}
+
+void VertexGather::apply(std::span<const float> perSample, std::span<float> out, std::vector<Float4>& scratch) const {
+    if (perSample.size() != samples_ * 3 || out.size() != vertex_.size() * 3)
+        throw Error("vertex gather: " + std::to_string(perSample.size()) + " sample values and " +
+                    std::to_string(out.size()) + " vertex values for " + std::to_string(samples_) + " samples and " +
+                    std::to_string(vertex_.size()) + " vertices (RGB each)");
+    // The samples' RGB padded to four lanes: one aligned load per weight.
+    scratch.resize(samples_);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, samples_, 8192), [&](const tbb::blocked_range<std::size_t>& r) {
+        for (std::size_t i = r.begin(); i != r.end(); ++i)
+            scratch[i] = Float4{perSample[3 * i], perSample[3 * i + 1], perSample[3 * i + 2], 0.0f};
+    });
+    const Float4* padded = scratch.data();
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, vertex_.size(), 4096), [&](const tbb::blocked_range<std::size_t>& r) {
+        for (std::size_t i = r.begin(); i != r.end(); ++i) {
+            // Two sums: each add waits for the one before it, and a vertex has about 8 weights.
+            Float4 even = {}, odd = {};
+            std::uint32_t e = offsets_[i];
+            const std::uint32_t stop = offsets_[i + 1];
+            for (; e + 2 <= stop; e += 2) {
+                even += weight_[e] * padded[sample_[e]];
+                odd += weight_[e + 1] * padded[sample_[e + 1]];
+            }
+            if (e < stop) even += weight_[e] * padded[sample_[e]];
+            const Float4 sum = even + odd;
+            float* to = out.data() + 3 * std::size_t(vertex_[i]);
+            to[0] = sum[0];
+            to[1] = sum[1];
+            to[2] = sum[2];
+        }
+    });
+}
+
+std::size_t VertexGather::memoryBytes() const {
+    return (vertex_.capacity() + offsets_.capacity() + sample_.capacity()) * sizeof(std::uint32_t) +
+           weight_.capacity() * sizeof(float);
+}
+
+}  // namespace opal
