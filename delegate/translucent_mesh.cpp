@@ -199,7 +199,7 @@ void TranslucentMesh::updateRadiance(bool reference, int primId, CommitStats& st
         shading->eta = engine_->material().eta;
         const IrradianceKey irradianceKey{false, momentsVersion_, shading->eta};
         if (!vertexIrradiance_ || irradianceKey != irradianceKey_) {
-            vertexIrradiance_ = std::make_shared<const std::vector<float>>(toVertices(weights, engine_->sampleIrradiance()));
+            vertexIrradiance_ = std::make_shared<const std::vector<float>>(engine_->vertexIrradiance());
             irradianceKey_ = irradianceKey;
         }
         stats.materialMs += clock.ms();

@@ -198,6 +198,13 @@ void RelightEngine::formRadiance(bool reweigh) {
     if (!vertexRadiance_->empty()) gather_.apply(radiance_, *vertexRadiance_, padded_);
 }
 
+std::vector<float> RelightEngine::vertexIrradiance() const {
+    std::vector<float> out(gather_.vertices() * 3);
+    std::vector<Float4> scratch;
+    if (!out.empty()) gather_.apply(irradiance_, out, scratch);
+    return out;
+}
+
 // L(x_o) += (1/pi) R_disk(rho_o; sigma) E(x_o; eta), in the sample domain (after the 9/7
 // inverse): the self term the bake left out of the transfer (docs/ARCHITECTURE.md#self-term);
 // then L = max(0, L) in the same pass.

@@ -57,6 +57,8 @@ public:
     std::shared_ptr<const std::vector<float>> sharedVertexRadiance() const { return vertexRadiance_; }
     // E(x_i; eta) = sum_m c_m(eta) E_m(x_i): samples x 3.
     std::span<const float> sampleIrradiance() const { return irradiance_; }
+    // The same at the render-mesh vertices (vertices x 3), through the engine's gather.
+    std::vector<float> vertexIrradiance() const;
     // Bytes the engine holds beyond the asset: the compact transfer, products, radiance.
     std::size_t memoryBytes() const;
 
