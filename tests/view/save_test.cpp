@@ -323,9 +323,11 @@ TEST(Save, RenderSettingsChangedInTheViewerAreSavedWithTheScene) {
     EXPECT_NE(layer.find("bool opal:reference = 1"), std::string::npos) << layer;
     EXPECT_NE(layer.find("int opal:samplesPerPixel = 4"), std::string::npos) << layer;
     // Switched on in a running session, the delegate's reference differs from one it starts
-    // with in the specular AOV only, by a few ULPs of its half floats (measured 3.8e-6 of
-    // up to 1.2); the saved layer opened again renders exactly what opal-render does.
-    expectOpalRenderMatches(dir, 1e-5);
+    // with in the specular AOV only, by a few float ULPs (measured 3.8e-6 of up to 1.2), which
+    // can round to one binary16 step apart (1.2e-4 at 0.21 in color.B, measured once the
+    // products and the vertex gather summed in another order); the saved layer opened again
+    // renders exactly what opal-render does.
+    expectOpalRenderMatches(dir, 1.25e-4);
     EXPECT_EQ(maxDifference(readImage(dir / "reopened.exr"), readImage(dir / "render.exr")), 0.0);
 }
 
