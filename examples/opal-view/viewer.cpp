@@ -95,7 +95,8 @@ Viewer::Viewer(const ViewOptions& options, std::vector<ScriptAction> script)
       converter_(display_.config()) {
     if (!recent_.warning().empty()) std::cerr << "opal-view: warning: " << recent_.warning() << '\n';
     draftBlock_ = useDraftPictures(*renderer_.delegate);
-    if (softwareOpenGl()) gpuDisplayError_ = "the OpenGL renderer is software";
+    softwareOpenGl_ = softwareOpenGl();
+    if (softwareOpenGl_) gpuDisplayError_ = "the OpenGL renderer is software";
     const bool openScene = opensGivenScene(options, script);
     model_.setRenderedAovs({"color"});
     if (!script.empty()) script_.emplace(std::move(script));
@@ -220,7 +221,17 @@ void Viewer::frame() {
         std::cout << "opal-view: wrote " << screenshot_->string() << std::endl;
         screenshot_.reset();
     }
-    window_.swapBuffers();
+    window_.swapBuffers(frameInterval());
+}
+
+// 60 frames a second at most (a display without vertical sync would draw as fast as the CPU
+// allows). With software OpenGL the interface's drawing takes the cores the renderer needs,
+// so while a sync runs that takes longer than a frame (a dragged light relights for tens of
+// milliseconds; a material edit for a few) it draws 30.
+std::chrono::microseconds Viewer::frameInterval() const {
+    const SessionStatus status = model_.isOpen() ? model_.session().status() : SessionStatus{};
+    const bool relighting = status.busy && status.lastSyncMs > 1000.0 / FramesPerSecond;
+    return std::chrono::microseconds(1'000'000 / (softwareOpenGl_ && relighting ? SlowFramesPerSecond : FramesPerSecond));
 }
 
 void Viewer::carryOut(const FileRequest& request) {

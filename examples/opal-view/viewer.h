@@ -65,6 +65,8 @@ public:
 
 private:
     void frame();
+    std::chrono::microseconds frameInterval() const;  // the interface's pace (frame())
+    static constexpr int FramesPerSecond = 60, SlowFramesPerSecond = 30;
     void drawInterface();
     void collectMessages();
     void refreshPicture();
@@ -106,6 +108,7 @@ private:
     bool shownImageStale_ = false;  // the GPU drew a newer one
     std::string gpuDisplayError_;   // why the GPU's display transform is off (the CPU's shows then)
     int draftBlock_ = 1;            // the delegate's draft pictures: one ray per N x N pixels
+    bool softwareOpenGl_ = false;   // the interface's drawing runs on the renderer's cores
     std::string shownAov_;  // what it shows
     std::string title_;
     MenuBar menu_;

@@ -5,6 +5,9 @@
 #include <glad/gl.h>
 #include <GLFW/glfw3.h>
 
+#include <algorithm>
+#include <thread>
+
 namespace opal::view {
 namespace {
 
@@ -56,7 +59,12 @@ std::pair<int, int> Window::framebufferSize() const {
     return {width, height};
 }
 
-void Window::swapBuffers() { glfwSwapBuffers(window_); }
+void Window::swapBuffers(std::chrono::microseconds interval) {
+    glfwSwapBuffers(window_);
+    const auto next = lastSwap_ + interval;
+    std::this_thread::sleep_until(next);
+    lastSwap_ = std::max(next, std::chrono::steady_clock::now());
+}
 
 void Window::pollEvents() { glfwPollEvents(); }
 

@@ -3,6 +3,7 @@
 // size, is what the picture is rendered at.
 #pragma once
 
+#include <chrono>
 #include <filesystem>
 #include <string>
 #include <utility>
@@ -26,7 +27,9 @@ public:
     void requestClose();
     void setTitle(const std::string& title);
     std::pair<int, int> framebufferSize() const;
-    void swapBuffers();
+    // Shows the frame drawn, then waits out the rest of `interval` since the last one (a
+    // display without vertical sync, such as Xvfb, would not wait).
+    void swapBuffers(std::chrono::microseconds interval);
     void pollEvents();
     // Files dropped on the window since the last call, in the order dropped.
     std::vector<std::filesystem::path> takeDroppedFiles();
@@ -36,6 +39,7 @@ private:
 
     GLFWwindow* window_ = nullptr;
     std::vector<std::filesystem::path> dropped_;
+    std::chrono::steady_clock::time_point lastSwap_;
 };
 
 }  // namespace opal::view
