@@ -5,6 +5,7 @@
 #include "delegate/relight/reference_gather.h"
 #include "delegate/relight/stopwatch.h"
 #include "delegate/relight/relight_engine.h"
+#include "delegate/relight/vertex_gather.h"
 
 #include <algorithm>
 #include <cmath>
@@ -104,11 +105,12 @@ void RelightReference::radiance(ReferenceTiming& timing, bool withPeer) {
         for (std::size_t j = 0; j < outputs_.size(); ++j)
             std::copy_n(gathered.begin() + 3 * j, 3, perSample.begin() + 3 * std::size_t(outputs_[j]));
     }
-    const std::size_t vertices = asset_->vertexWeights.offsets.size() - 1;
-    std::vector<float> vertexRadiance(3 * vertices), vertexIrradiance(3 * vertices);
+    const VertexGather gather(asset_->vertexWeights, samples);  // as an engine holds it: not timed
+    std::vector<float> vertexRadiance(3 * gather.vertices()), vertexIrradiance(3 * gather.vertices());
+    std::vector<Float4> scratch;
     const Stopwatch verticesClock;
-    interpolateToVertices(asset_->vertexWeights, extrapolated() ? perSample : gathered, vertexRadiance);
-    interpolateToVertices(asset_->vertexWeights, exact, vertexIrradiance);
+    gather.apply(extrapolated() ? perSample : gathered, vertexRadiance, scratch);
+    gather.apply(exact, vertexIrradiance, scratch);
     timing.verticesMs = verticesClock.ms();
     if (octree_ && withPeer) timing.peer = peer(exact, gathered);
 }

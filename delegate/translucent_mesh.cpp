@@ -25,12 +25,6 @@ void checkShadeable(const TranslucentAsset& asset, const hd::SdfPath& id) {
         fail(std::to_string(asset.mesh.normals.size()) + " normals for " + std::to_string(vertices) + " vertices");
 }
 
-std::vector<float> toVertices(const VertexWeights& weights, std::span<const float> perSample) {
-    std::vector<float> out((weights.offsets.size() - 1) * 3);
-    interpolateToVertices(weights, perSample, out);
-    return out;
-}
-
 }  // namespace
 
 void TranslucentMesh::fail(const std::string& what) const { throw Error("translucent mesh '" + id() + "': " + what); }
@@ -181,7 +175,6 @@ void TranslucentMesh::updateRadiance(bool reference, int primId, CommitStats& st
     shading->specular = material_.specular;
     shading->roughness = material_.roughness;
     shading->primId = primId;
-    const VertexWeights& weights = desc_.asset->vertexWeights;
     if (!reference) {
         if (engineMoments_ != momentsVersion_) {
             const Stopwatch clock;
@@ -216,8 +209,8 @@ void TranslucentMesh::updateRadiance(bool reference, int primId, CommitStats& st
         } catch (const Error& e) {
             fail(e.what());
         }
-        shading->vertexRadiance = std::make_shared<const std::vector<float>>(toVertices(weights, gathered));
-        vertexIrradiance_ = std::make_shared<const std::vector<float>>(toVertices(weights, exact));
+        shading->vertexRadiance = std::make_shared<const std::vector<float>>(engine_->toVertices(gathered));
+        vertexIrradiance_ = std::make_shared<const std::vector<float>>(engine_->toVertices(exact));
         irradianceKey_ = {true, momentsVersion_, m.eta};
         shading->eta = m.eta;
         ++stats.referenceGathers;

@@ -198,10 +198,9 @@ void RelightEngine::formRadiance(bool reweigh) {
     if (!vertexRadiance_->empty()) gather_.apply(radiance_, *vertexRadiance_, padded_);
 }
 
-std::vector<float> RelightEngine::vertexIrradiance() const {
+std::vector<float> RelightEngine::toVertices(std::span<const float> perSample) {
     std::vector<float> out(gather_.vertices() * 3);
-    std::vector<Float4> scratch;
-    if (!out.empty()) gather_.apply(irradiance_, out, scratch);
+    if (!out.empty()) gather_.apply(perSample, out, padded_);
     return out;
 }
 
@@ -232,11 +231,6 @@ RelightEngine::NegativeNoise RelightEngine::addSelfTermAndProject() {
 // (docs/ARCHITECTURE.md#nonnegative-radiance).
 RelightEngine::NegativeNoise zeroNegatives(std::span<float> values) {
     return projectNonNegative(values, [](std::size_t, float v) { return v; }).noise;
-}
-
-void interpolateToVertices(const VertexWeights& weights, std::span<const float> perSample, std::span<float> out) {
-    std::vector<Float4> scratch;
-    VertexGather(weights, perSample.size() / 3).apply(perSample, out, scratch);
 }
 
 namespace {

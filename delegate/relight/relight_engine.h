@@ -58,7 +58,10 @@ public:
     // E(x_i; eta) = sum_m c_m(eta) E_m(x_i): samples x 3.
     std::span<const float> sampleIrradiance() const { return irradiance_; }
     // The same at the render-mesh vertices (vertices x 3), through the engine's gather.
-    std::vector<float> vertexIrradiance() const;
+    std::vector<float> vertexIrradiance() { return toVertices(irradiance_); }
+    // Any per-sample RGB values (samples x 3) at the render-mesh vertices, through the
+    // engine's gather and its scratch.
+    std::vector<float> toVertices(std::span<const float> perSample);
     // Bytes the engine holds beyond the asset: the compact transfer, products, radiance.
     std::size_t memoryBytes() const;
 
@@ -104,9 +107,5 @@ private:
 // the highest value (docs/ARCHITECTURE.md#nonnegative-radiance).
 RelightEngine::NegativeNoise zeroNegatives(std::span<float> values);
 
-// Per render-mesh vertex, sum_j w_j value[sample_j] (RGB): the asset's VertexWeights, once
-// (an engine keeps its VertexGather for every edit). out: vertices x 3. Throws opal::Error
-// on inconsistent sizes or an out-of-range sample.
-void interpolateToVertices(const VertexWeights& weights, std::span<const float> perSample, std::span<float> out);
 
 }  // namespace opal

@@ -222,11 +222,13 @@ void TransferProduct::multiplyRows(const float* x, std::size_t lanes, float* y, 
             constexpr std::size_t Cs = decltype(channels)::value;
             using Index = std::remove_cv_t<std::remove_pointer_t<decltype(index)>>;
 #if OPAL_TRANSFER_PRODUCT_AVX2
-            if (kernel_ == Kernel::Avx512 && Cs == 6) {
-                for (std::uint32_t r = begin; r < end; ++r)
-                    productRowAvx512Lanes8<Index>(m.rowOffsets.data(), index, m.halves.data(), m.scale, r, x,
-                                                  y + (r * K + k) * Cs, Cs);
-                return;
+            if constexpr (Cs == 6) {
+                if (kernel_ == Kernel::Avx512) {
+                    for (std::uint32_t r = begin; r < end; ++r)
+                        productRowAvx512Lanes8<Index>(m.rowOffsets.data(), index, m.halves.data(), m.scale, r, x,
+                                                      y + (r * K + k) * Cs, Cs);
+                    return;
+                }
             }
             if (kernel_ != Kernel::Portable) {
                 for (std::uint32_t r = begin; r < end; ++r)

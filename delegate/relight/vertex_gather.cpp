@@ -23,9 +23,12 @@ void checkWeights(const VertexWeights& weights, std::size_t samples) {
     for (std::size_t v = 0; v < vertices; ++v)
         if (weights.offsets[v] > weights.offsets[v + 1])
             throw Error("vertex weights: vertex " + std::to_string(v) + "'s offsets decrease");
-    for (std::uint32_t s : weights.samples)
-        if (s >= samples)
-            throw Error("vertex weights: a sample index is not below the " + std::to_string(samples) + " samples");
+    for (std::size_t v = 0; v < vertices; ++v)
+        for (std::uint32_t e = weights.offsets[v]; e < weights.offsets[v + 1]; ++e)
+            if (weights.samples[e] >= samples)
+                throw Error("vertex weights: vertex " + std::to_string(v) + " reads sample " +
+                            std::to_string(weights.samples[e]) + ", not below the " + std::to_string(samples) +
+                            " samples");
 }
 
 // The sample a vertex leans on most (its first on a tie; 0 for a vertex without weights).

@@ -140,9 +140,10 @@ TEST(TransferProduct, MatchesTheExactProductForRowsOfEveryLength) {
 }
 
 TEST(TransferProduct, WideColumnsBeyond65536Samples) {
-    // 70,000 samples need 32-bit columns; 2 entries per row keep the test fast.
+    // 70,000 samples need 32-bit columns; 11 entries per row (a whole vector of 8 and a tail)
+    // keep the test fast.
     CompressedTransfer t;
-    t.perBasis.push_back(randomMatrix(70000, 2, 2.0, 3));
+    t.perBasis.push_back(randomMatrix(70000, 11, 2.0, 3));
     const TransferProduct product(t, 70000);
     std::uint64_t e = 0;
     for (std::uint32_t r = 0; r < 70000; ++r)
@@ -150,6 +151,7 @@ TEST(TransferProduct, WideColumnsBeyond65536Samples) {
             ASSERT_EQ(product.column(0, e), t.perBasis[0].columns[i]);
     EXPECT_GT(*std::max_element(t.perBasis[0].columns.begin(), t.perBasis[0].columns.end()), 65536u);
     expectProductMatches(t, 4, 3);
+    expectProductMatches(t, 8, 6);
 }
 
 TEST(TransferProduct, ValuesKeepElevenSignificantBitsAndDropOnlyTheNegligible) {

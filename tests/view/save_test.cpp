@@ -325,9 +325,10 @@ TEST(Save, RenderSettingsChangedInTheViewerAreSavedWithTheScene) {
     // Switched on in a running session, the delegate's reference differs from one it starts
     // with in the specular AOV only, by a few float ULPs (measured 3.8e-6 of up to 1.2), which
     // can round to one binary16 step apart (1.2e-4 at 0.21 in color.B, measured once the
-    // products and the vertex gather summed in another order); the saved layer opened again
-    // renders exactly what opal-render does.
-    expectOpalRenderMatches(dir, 1.25e-4);
+    // products and the vertex gather summed in another order): one step at values up to 2
+    // (9.8e-4), and so one PNG code at a code's edge. The saved layer opened again renders
+    // exactly what opal-render does.
+    expectOpalRenderMatches(dir, 9.8e-4, 1);
     EXPECT_EQ(maxDifference(readImage(dir / "reopened.exr"), readImage(dir / "render.exr")), 0.0);
 }
 
