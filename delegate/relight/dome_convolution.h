@@ -39,6 +39,11 @@ public:
     void add(const Imath::V3f& normal, float* moments) const;
     // U_m(n) summed at exactly this normal, without the grid: what add() interpolates.
     std::vector<float> exact(const Imath::V3f& normal) const;
+    std::size_t memoryBytes() const {
+        return (dx_.capacity() + dy_.capacity() + dz_.capacity() + red_.capacity() + green_.capacity() +
+                blue_.capacity() + nodes_.capacity()) * sizeof(float) +
+               rowCorners_.capacity() * sizeof(Imath::V3f);
+    }
 
 private:
     void sum(const Imath::V3f& normal, float* out) const;

@@ -117,9 +117,20 @@ EnvironmentLight EnvironmentLight::fromDesc(std::shared_ptr<const LatLongMap> ma
     return EnvironmentLight(std::move(map), desc.transform, emittedRadiance(desc));
 }
 
-std::vector<float> EnvironmentLight::cubeRadiance(const CubeMapLayout& cube, const Imath::M44d& objectToWorld) const {
+Imath::M33d EnvironmentLight::domeFromObject(const Imath::M44d& objectToWorld) const {
     // Object -> world -> dome, row vectors.
-    const Imath::M33d domeFromObject = rotationOf(objectToWorld, "dome light: mesh") * domeFromWorld_;
+    return rotationOf(objectToWorld, "dome light: mesh") * domeFromWorld_;
+}
+
+std::vector<float> EnvironmentLight::cubeRadiance(const CubeMapLayout& cube, const Imath::M44d& objectToWorld) const {
+    return cubeRadianceIn(cube, domeFromObject(objectToWorld));
+}
+
+std::vector<float> EnvironmentLight::domeCubeRadiance(const CubeMapLayout& cube) const {
+    return cubeRadianceIn(cube, Imath::M33d());
+}
+
+std::vector<float> EnvironmentLight::cubeRadianceIn(const CubeMapLayout& cube, const Imath::M33d& domeFromCube) const {
     const std::uint32_t size = cube.faceSize();
     std::vector<float> radiance(std::size_t(cube.texels()) * 3);
     tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, cube.texels(), 64), [&](const auto& range) {
@@ -134,7 +145,7 @@ std::vector<float> EnvironmentLight::cubeRadiance(const CubeMapLayout& cube, con
                     const double t = 2.0 * (texel.v + (b + 0.5) / kSupersamples) / size - 1.0;
                     const double q = 1.0 + s * s + t * t;
                     const double w = 1.0 / (q * std::sqrt(q));  // solid angle per unit face area
-                    const Imath::V3d d = Imath::V3d(CubeMapLayout::faceDirection(texel.face, float(s), float(t))) * domeFromObject;
+                    const Imath::V3d d = Imath::V3d(CubeMapLayout::faceDirection(texel.face, float(s), float(t))) * domeFromCube;
                     const Imath::V2d uv = LatLongMap::coordinates(d);
                     sum += Imath::V3d(map_->sample(uv.x, uv.y, footprint)) * w;
                     weights += w;

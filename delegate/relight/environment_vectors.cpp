@@ -186,7 +186,8 @@ void EnvironmentVectors::addRows(const Index* positions, const float* radiance, 
     });
 }
 
-void EnvironmentVectors::addDome(std::vector<float> radiance, std::span<const SurfaceSample> samples,
+void EnvironmentVectors::addDome(std::vector<float> radiance, const DomeConvolution* open,
+                                 const Imath::M33d& domeFromObject, std::span<const SurfaceSample> samples,
                                  IrradianceMoments& moments) {
     if (samples.size() != this->samples() || moments.terms != terms_ || moments.samples != this->samples())
         throw Error("dome light: the environment transfer has " + count(this->samples()) + " samples x " +
@@ -194,9 +195,12 @@ void EnvironmentVectors::addDome(std::vector<float> radiance, std::span<const Su
                     count(moments.samples) + " x " + count(moments.terms));
     const CubeMapLayout cube(faceSize_);
     if (kind_ == EnvironmentVectorKind::Occluded) {
-        const DomeConvolution open(cube, radiance, terms_, basis_);
+        if (!open || open->terms() != terms_)
+            throw Error("dome light: occluded environment vectors need the dome's unoccluded integral with " +
+                        count(terms_) + " Fresnel terms");
+        const Imath::M33f turn(domeFromObject);
         tbb::parallel_for(tbb::blocked_range<std::size_t>(0, samples.size(), kSamplesPerTask), [&](const auto& range) {
-            for (std::size_t i = range.begin(); i != range.end(); ++i) open.add(samples[i].normal, moments.sample(i));
+            for (std::size_t i = range.begin(); i != range.end(); ++i) open->add(samples[i].normal * turn, moments.sample(i));
         });
     }
     haarForwardCharts(std::span<float>(radiance), cube.charts(), 3);

@@ -60,7 +60,18 @@ void MeshIrradiance::compute(Contribution& c, const RayScene* scene) {
     if (!environment_) environment_ = std::make_unique<EnvironmentVectors>(asset_->environment, asset_->samples.size());
     const Stopwatch moments;
     const CubeMapLayout cube(asset_->environment.cubeFaceSize);
-    environment_->addDome(dome->cubeRadiance(cube, objectToWorld_), asset_->samples, c.moments);
+    const DomeConvolution* open = nullptr;
+    if (environment_->kind() == EnvironmentVectorKind::Occluded) {
+        if (!open_.integral || open_.map != dome->map() || open_.scale != dome->scale()) {
+            open_.integral.reset();  // a failed build leaves no stale integral
+            open_.integral = std::make_unique<const DomeConvolution>(cube, dome->domeCubeRadiance(cube), terms_, basis_);
+            open_.map = dome->map();
+            open_.scale = dome->scale();
+        }
+        open = open_.integral.get();
+    }
+    environment_->addDome(dome->cubeRadiance(cube, objectToWorld_), open, dome->domeFromObject(objectToWorld_),
+                          asset_->samples, c.moments);
     lastUpdate_.momentsMs = moments.ms();
 }
 
@@ -150,6 +161,7 @@ std::size_t MeshIrradiance::memoryBytes() const {
     const auto moments = [](const IrradianceMoments& m) { return m.values.capacity() * sizeof(float); };
     std::size_t bytes = (placed_.positions.capacity() + placed_.normals.capacity()) * sizeof(Imath::V3f) + moments(total_);
     if (environment_) bytes += environment_->memoryBytes();
+    if (open_.integral) bytes += open_.integral->memoryBytes();
     if (reference_) bytes += reference_->memoryBytes();
     for (const auto& [path, contribution] : lights_)
         bytes += moments(contribution.moments) + contribution.arrivals.capacity() * sizeof(LightArrival) +

@@ -96,6 +96,14 @@ private:
     FresnelResponse response_;
     PlacedSamples placed_;
     std::unique_ptr<EnvironmentVectors> environment_;        // built with the first dome
+    // The last dome's unoccluded integral, in the dome's frame: kept while only transforms
+    // change (a rotation), rebuilt for another map or colour.
+    struct OpenDome {
+        const LatLongMap* map = nullptr;
+        Rgb scale;
+        std::unique_ptr<const DomeConvolution> integral;
+    };
+    OpenDome open_;
     std::unique_ptr<const EnvironmentReference> reference_;   // built with the first referenceIrradiance
     std::map<hd::SdfPath, Contribution> lights_;
     IrradianceMoments total_;
