@@ -100,7 +100,7 @@ public:
     // Row vectors: d_dome = d_object * domeFromObject(objectToWorld), a rotation.
     Imath::M33d domeFromObject(const Imath::M44d& objectToWorld) const;
     const Rgb& scale() const { return scale_; }
-    const LatLongMap* map() const { return map_.get(); }
+    const std::shared_ptr<const LatLongMap>& map() const { return map_; }
 
 private:
     std::vector<float> cubeRadianceIn(const CubeMapLayout& cube, const Imath::M33d& domeFromCube) const;

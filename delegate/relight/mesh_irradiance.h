@@ -99,7 +99,7 @@ private:
     // The last dome's unoccluded integral, in the dome's frame: kept while only transforms
     // change (a rotation), rebuilt for another map or colour.
     struct OpenDome {
-        const LatLongMap* map = nullptr;
+        std::shared_ptr<const LatLongMap> map;  // held: a freed map's address may come back
         Rgb scale;
         std::unique_ptr<const DomeConvolution> integral;
     };

@@ -1,5 +1,6 @@
 #include "delegate/relight/vertex_gather.h"
 
+#include "schema/asset/sidecar_checks.h"
 #include "schema/error.h"
 
 #include <tbb/blocked_range.h>
@@ -13,22 +14,18 @@ namespace opal {
 
 namespace {
 
+// The CSR checks a sidecar's reader makes (sidecar_checks.h), for weights that come from
+// elsewhere too (tests, synthetic assets); the sums to 1 are the reader's alone.
 void checkWeights(const VertexWeights& weights, std::size_t samples) {
-    const std::size_t vertices = weights.offsets.empty() ? 0 : weights.offsets.size() - 1;
-    if (weights.samples.size() != weights.weights.size() || (vertices > 0 && weights.offsets.back() != weights.samples.size()) ||
-        (vertices > 0 && weights.offsets.front() != 0))
-        throw Error("vertex weights: inconsistent sizes (" + std::to_string(vertices) + " vertices, " +
-                    std::to_string(weights.samples.size()) + " sample indices, " + std::to_string(weights.weights.size()) +
-                    " weights)");
-    for (std::size_t v = 0; v < vertices; ++v)
-        if (weights.offsets[v] > weights.offsets[v + 1])
-            throw Error("vertex weights: vertex " + std::to_string(v) + "'s offsets decrease");
-    for (std::size_t v = 0; v < vertices; ++v)
-        for (std::uint32_t e = weights.offsets[v]; e < weights.offsets[v + 1]; ++e)
-            if (weights.samples[e] >= samples)
-                throw Error("vertex weights: vertex " + std::to_string(v) + " reads sample " +
-                            std::to_string(weights.samples[e]) + ", not below the " + std::to_string(samples) +
-                            " samples");
+    if (weights.offsets.empty()) return;  // no vertices
+    constexpr std::string_view context = "vertex gather";
+    if (weights.samples.size() != weights.weights.size())
+        throw Error(std::string(context) + ": " + std::to_string(weights.samples.size()) + " sample indices but " +
+                    std::to_string(weights.weights.size()) + " weights");
+    const std::span<const std::uint32_t> offsets = weights.offsets;
+    sidecar::checkOffsets(offsets, offsets.size() - 1, weights.samples.size(), context, "vertex offsets");
+    sidecar::checkIndices(offsets, std::span<const std::uint32_t>(weights.samples), samples, false, context,
+                          "vertex samples");
 }
 
 // The sample a vertex leans on most (its first on a tie; 0 for a vertex without weights).
