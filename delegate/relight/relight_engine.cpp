@@ -1,6 +1,7 @@
 #include "delegate/relight/relight_engine.h"
 
 #include "delegate/relight/float4.h"
+#include "delegate/relight/haar_locality_order.h"
 #include "delegate/relight/vertex_gather.h"
 #include "schema/asset/self_term.h"
 #include "schema/error.h"
@@ -48,7 +49,8 @@ void checkAsset(const TranslucentAsset& asset) {
 TransferProduct checkedTransfer(const std::shared_ptr<const TranslucentAsset>& asset) {
     if (!asset) throw Error("relight engine: no asset");
     checkAsset(*asset);
-    return TransferProduct(asset->transfer, asset->samples.size());
+    return TransferProduct(asset->transfer, asset->samples.size(), TransferProduct::Kernel::Best,
+                           haarLocalitySlots(asset->layout));
 }
 
 // values[i] = max(0, update(i, values[i])) in one parallel pass: how many were negative and
@@ -115,12 +117,14 @@ void RelightEngine::setIrradiance(const IrradianceMoments& irradiance) {
     haar_.assign(samples_ * W, 0.0f);
     for (std::size_t i = 0; i < samples_; ++i) std::copy_n(irradiance.sample(i), C, haar_.data() + i * W);
     haarForwardCharts(std::span<float>(haar_), asset_->layout, std::uint32_t(W));
+    input_.resize(haar_.size());
+    product_.arrangeInput(haar_, W, input_);
 
     // y_{k,m} = (w1 T_k w0^-1) wE_m, one task per block of rows of every matrix.
     products_.resize(samples_ * K_ * C);
     tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, std::uint32_t(samples_), kRowsPerTask),
                       [&](const tbb::blocked_range<std::uint32_t>& rows) {
-                          product_.multiplyRows(haar_.data(), W, products_.data(), C, rows.begin(), rows.end());
+                          product_.multiplyRows(input_.data(), W, products_.data(), C, rows.begin(), rows.end());
                       });
     moments_ = irradiance;
     fresnel_ = fresnelMoments(material_.eta, int(moments_.terms), moments_.basis);
@@ -243,7 +247,7 @@ std::size_t bytesOf(const std::vector<T>& v) {
 }  // namespace
 
 std::size_t RelightEngine::memoryBytes() const {
-    return product_.memoryBytes() + bytesOf(moments_.values) + bytesOf(haar_) + bytesOf(products_) +
+    return product_.memoryBytes() + bytesOf(moments_.values) + bytesOf(haar_) + bytesOf(input_) + bytesOf(products_) +
            bytesOf(weighted_) + bytesOf(fresnel_) + bytesOf(profile_) + bytesOf(self_) + bytesOf(radiance_) + bytesOf(irradiance_) +
            bytesOf(*vertexRadiance_) + (spareVertexRadiance_ ? bytesOf(*spareVertexRadiance_) : 0) + bytesOf(padded_) +
            gather_.memoryBytes();

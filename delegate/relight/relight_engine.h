@@ -89,6 +89,7 @@ private:
     std::size_t paddedK_ = 0;        // K rounded up to a multiple of 4
     IrradianceMoments moments_;      // E_m as given
     std::vector<float> haar_;        // wE_m = w0 E_m: samples x (3 terms, padded to 4 lanes)
+    std::vector<float> input_;       // wE_m in the product's input order (arrangeInput)
     std::vector<float> products_;    // y: samples x K x (3 terms)
     std::vector<float> weighted_;    // z_k = sum_m c_m y_{k,m}: samples x 3 x paddedK
     Material material_;

@@ -26,4 +26,8 @@ inline float normalHalfToFloat(std::uint16_t h) {
     return f;
 }
 
+// normalHalfToFloat, or 0 for the zero half (what the transfer product's slots hold where
+// one matrix of a pair has no entry).
+inline float storedHalfToFloat(std::uint16_t h) { return (h & 0x7fffu) != 0 ? normalHalfToFloat(h) : 0.0f; }
+
 }  // namespace opal

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <numeric>
 #include <random>
 #include <vector>
 
@@ -70,13 +71,16 @@ std::vector<float> paddedInput(std::size_t samples, std::size_t lanes, std::size
 }
 
 // Every output within 2^-11 sum |a||x| (binary16's relative rounding) plus float sums.
-void expectProductMatches(const CompressedTransfer& t, std::size_t lanes, std::size_t C, TransferProduct::Kernel kernel) {
+void expectProductMatches(const CompressedTransfer& t, std::size_t lanes, std::size_t C, TransferProduct::Kernel kernel,
+                          const std::vector<std::uint32_t>& slots) {
     const std::size_t N = t.perBasis[0].rows, K = t.perBasis.size();
-    const TransferProduct product(t, N, kernel);
+    const TransferProduct product(t, N, kernel, slots);
     ASSERT_EQ(product.kernel(), kernel);
     const std::vector<float> x = paddedInput(N, lanes, C, 7);
+    std::vector<float> arranged(x.size(), 0.0f);
+    product.arrangeInput(x, lanes, arranged);
     std::vector<float> y(N * K * C, -1.0f);
-    product.multiplyRows(x.data(), lanes, y.data(), C, 0, std::uint32_t(N));
+    product.multiplyRows(arranged.data(), lanes, y.data(), C, 0, std::uint32_t(N));
     const Product exact = exactProduct(t, x, lanes, C);
     for (std::size_t i = 0; i < y.size(); ++i)
         ASSERT_NEAR(y[i], exact.y[i], std::ldexp(1.0, -11) * exact.bound[i] + 1e-6 * exact.bound[i]) << "output " << i;
@@ -90,8 +94,16 @@ std::vector<TransferProduct::Kernel> kernels() {
     return all;
 }
 
+// Every kernel, with wE read in its own order and in a shuffled one.
 void expectProductMatches(const CompressedTransfer& t, std::size_t lanes, std::size_t C) {
-    for (TransferProduct::Kernel kernel : kernels()) expectProductMatches(t, lanes, C, kernel);
+    std::vector<std::uint32_t> shuffled(t.perBasis[0].rows);
+    std::iota(shuffled.begin(), shuffled.end(), 0u);
+    std::shuffle(shuffled.begin(), shuffled.end(), std::mt19937(5));
+    for (TransferProduct::Kernel kernel : kernels())
+        for (const std::vector<std::uint32_t>& slots : {std::vector<std::uint32_t>{}, shuffled}) {
+            SCOPED_TRACE(slots.empty() ? "own order" : "shuffled slots");
+            expectProductMatches(t, lanes, C, kernel, slots);
+        }
 }
 
 CompressedTransfer randomTransfer(std::uint32_t samples, std::size_t K) {
@@ -145,10 +157,10 @@ TEST(TransferProduct, WideColumnsBeyond65536Samples) {
     CompressedTransfer t;
     t.perBasis.push_back(randomMatrix(70000, 11, 2.0, 3));
     const TransferProduct product(t, 70000);
-    std::uint64_t e = 0;
-    for (std::uint32_t r = 0; r < 70000; ++r)
-        for (std::uint64_t i = t.perBasis[0].rowOffsets[r]; i < t.perBasis[0].rowOffsets[r + 1]; ++i, ++e)
-            ASSERT_EQ(product.column(0, e), t.perBasis[0].columns[i]);
+    const SparseMatrix& m = t.perBasis[0];
+    for (std::uint32_t r = 0; r < 70000; r += 7)
+        for (std::uint64_t i = m.rowOffsets[r]; i < m.rowOffsets[r + 1]; ++i)
+            ASSERT_NEAR(product.value(0, r, m.columns[i]), m.values[i], std::ldexp(std::abs(m.values[i]), -11));
     EXPECT_GT(*std::max_element(t.perBasis[0].columns.begin(), t.perBasis[0].columns.end()), 65536u);
     expectProductMatches(t, 4, 3);
     expectProductMatches(t, 8, 6);
@@ -162,21 +174,55 @@ TEST(TransferProduct, ValuesKeepElevenSignificantBitsAndDropOnlyTheNegligible) {
     float largest = 0.0f;
     for (float v : m.values) largest = std::max(largest, std::abs(v));
     std::uint64_t kept = 0, dropped = 0;
-    for (std::uint32_t r = 0; r < 64; ++r) {
-        std::uint64_t e = product.rowBegin(0, r);
+    for (std::uint32_t r = 0; r < 64; ++r)
         for (std::uint64_t i = m.rowOffsets[r]; i < m.rowOffsets[r + 1]; ++i) {
-            if (e < product.rowBegin(0, r + 1) && product.column(0, e) == m.columns[i]) {
-                EXPECT_NEAR(product.value(0, e), m.values[i], std::ldexp(std::abs(m.values[i]), -11));
-                ++e, ++kept;
+            const float stored = product.value(0, r, m.columns[i]);
+            if (stored != 0.0f) {
+                EXPECT_NEAR(stored, m.values[i], std::ldexp(std::abs(m.values[i]), -11));
+                ++kept;
             } else {
                 EXPECT_LT(std::abs(m.values[i]), std::ldexp(largest, -28)) << "row " << r << " entry " << i;
                 ++dropped;
             }
         }
-        EXPECT_EQ(e, product.rowBegin(0, r + 1));
-    }
     EXPECT_GT(dropped, 0u);
     EXPECT_EQ(kept, product.nonZeros());
+}
+
+// Two matrices with no column in common and two with every column in common: a pair's
+// shared column list holds each value once, in its own matrix, and zeros where only the
+// other matrix has an entry.
+TEST(TransferProduct, PairsShareColumnsWithoutMixingTheirValues) {
+    CompressedTransfer t;
+    SparseMatrix even = randomMatrix(96, 6, 2.0, 41), odd = even;
+    for (std::uint32_t& c : odd.columns) ++c;  // one column per 16 wide block, below its last: disjoint
+    for (float& v : odd.values) v = -2.0f * v;
+    t.perBasis = {even, odd, even, even};
+    const TransferProduct product(t, 96);
+    for (std::uint32_t r = 0; r < 96; ++r)
+        for (std::size_t k = 0; k < 4; ++k) {
+            const SparseMatrix& m = t.perBasis[k];
+            for (std::uint32_t c = 0; c < 96; ++c) {
+                const auto begin = m.columns.begin() + std::ptrdiff_t(m.rowOffsets[r]);
+                const auto end = m.columns.begin() + std::ptrdiff_t(m.rowOffsets[r + 1]);
+                const auto at = std::find(begin, end, c);
+                const float expected = at == end ? 0.0f : m.values[std::size_t(at - m.columns.begin())];
+                ASSERT_NEAR(product.value(k, r, c), expected, std::ldexp(std::abs(expected), -11))
+                    << "matrix " << k << " row " << r << " column " << c;
+            }
+        }
+    EXPECT_EQ(product.nonZeros(), 4u * 96u * 6u);
+    expectProductMatches(t, 8, 6);
+}
+
+TEST(TransferProduct, InputSlotsThatAreNotAPermutationAreRefused) {
+    const CompressedTransfer t = randomTransfer(32, 2);
+    std::vector<std::uint32_t> slots(32);
+    std::iota(slots.begin(), slots.end(), 0u);
+    slots[3] = 4;
+    EXPECT_THROW(TransferProduct(t, 32, TransferProduct::Kernel::Best, slots), Error);
+    slots.pop_back();
+    EXPECT_THROW(TransferProduct(t, 32, TransferProduct::Kernel::Best, slots), Error);
 }
 
 TEST(TransferProduct, BestIsTheFastestKernelTheCpuHas) {
