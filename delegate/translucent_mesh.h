@@ -47,7 +47,7 @@ struct BoundMaterial {
     std::uint64_t version = 0;
     Material subsurface;
     bool specular = true;
-    double roughness = 0.35;
+    double roughness = hd::kDefaultSpecularRoughness;
 };
 
 class TranslucentMesh final : public hd::Rprim {

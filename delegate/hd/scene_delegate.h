@@ -28,10 +28,18 @@ struct MeshDesc {
 
 // Material override (Opal's material prim): the subsurface coefficients in mm^-1 and the
 // specular layer. Colors are in the working space.
+//
+// Defaults of what a layer holds as a float attribute are float values here too (0.35f, not
+// 0.35): a value left at its default is saved as the float it is, and a scene that omits an
+// attribute then renders bit for bit as one that authors its default. With double defaults
+// the viewer's saved picture and opal-render's of the saved layer differed by a float step
+// in every specular pixel (tests/view/save_test.cpp).
+inline constexpr double kDefaultSpecularRoughness = 0.35f;
+
 struct MaterialDesc {
     Material subsurface;
     bool specular = true;          // a Fresnel-weighted GGX layer
-    double specularRoughness = 0.35;
+    double specularRoughness = kDefaultSpecularRoughness;
 };
 
 enum class LightKind { Sphere, Distant, Dome, ShadowField };
@@ -66,7 +74,7 @@ struct LightDesc {
     std::optional<double> shapingConeAngle;  // degrees; set for a spot light
     double shapingConeSoftness = 0.0;
     // DistantLight
-    double angle = 0.53;  // degrees
+    double angle = 0.53f;  // degrees (a float default: see MaterialDesc)
     // DomeLight
     std::string textureFile;
     std::string textureColorSpace = "Linear Rec.709 (sRGB)";
@@ -85,7 +93,7 @@ struct CameraDesc {
     double focalLength = 50.0;
     double horizontalAperture = 36.0;
     double verticalAperture = 24.0;
-    double nearClip = 0.1, farClip = 1.0e6;
+    double nearClip = 0.1f, farClip = 1.0e6;  // float defaults: see MaterialDesc
 };
 
 class SceneDelegate {

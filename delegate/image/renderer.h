@@ -17,6 +17,7 @@
 #include "delegate/relight/environment_light.h"
 #include "delegate/relight/shadow_field_light.h"
 #include "delegate/hd/aov.h"
+#include "delegate/hd/scene_delegate.h"
 #include "delegate/hd/render_buffer.h"
 #include "delegate/image/pixel_filter.h"
 #include "raytrace/ray_scene.h"
@@ -41,7 +42,7 @@ struct MeshShading {
     std::shared_ptr<const std::vector<float>> vertexIrradiance;
     double eta = 1.3;
     bool specular = true;
-    double roughness = 0.35;
+    double roughness = hd::kDefaultSpecularRoughness;
     int primId = -1;
 };
 

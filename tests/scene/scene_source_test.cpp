@@ -298,6 +298,36 @@ TEST(SceneDefaults, ResolutionFollowsTheCameraAperture) {
     EXPECT_EQ(chooseRenderSetup(scene, {}).resolution, (Resolution{640, 467}));
 }
 
+// A layer stores these as floats, so a value saved at its default (the viewer writes every
+// parameter) must read back as the unauthored default, bit for bit: else the saved scene
+// renders a float step away from the picture it was saved from.
+TEST(SceneDefaults, AnAttributeAuthoredAtItsDefaultReadsAsTheUnauthoredOne) {
+    const test::SceneDir dir;
+    AssetCache assets;
+    const Scene scene = readScene(dir.write("scene.usda", R"(#usda 1.0
+def Material "Plain"
+{
+    token opal:preset = "marble"
+}
+def Material "Authored"
+{
+    token opal:preset = "marble"
+    float opal:specularRoughness = 0.35
+}
+def DistantLight "PlainSun"
+{
+}
+def DistantLight "AuthoredSun"
+{
+    float inputs:angle = 0.53
+}
+)"),
+                                  assets);
+    EXPECT_EQ(scene.materials.at("/Plain").desc.specularRoughness, scene.materials.at("/Authored").desc.specularRoughness);
+    EXPECT_EQ(scene.lights.at("/PlainSun").desc.angle, scene.lights.at("/AuthoredSun").desc.angle);
+    EXPECT_EQ(hd::CameraDesc{}.nearClip, double(float(hd::CameraDesc{}.nearClip)));
+}
+
 TEST(SceneDefaults, UnitMismatchWarns) {
     const test::SceneDir dir;
     dir.writeSphereAsset("sphere");

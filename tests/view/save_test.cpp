@@ -14,9 +14,8 @@
 namespace opal::test {
 namespace {
 
-// The viewer's EXR (within `tolerance`) and PNG (within `pngCodes` of 255) against
-// opal-render's of the layer it saved.
-void expectOpalRenderMatches(const SceneDir& dir, double tolerance = 0.0, int pngCodes = 0) {
+// The viewer's EXR and PNG against opal-render's of the layer it saved: bit for bit.
+void expectOpalRenderMatches(const SceneDir& dir) {
     const ViewRun render = runOpalRender(dir, shellWord(dir / "saved.usda") + " -o " + shellWord(dir / "render.exr") +
                                                   " --preview " + shellWord(dir / "render.png"));
     ASSERT_EQ(render.exitCode, 0) << render.err;
@@ -27,8 +26,8 @@ void expectOpalRenderMatches(const SceneDir& dir, double tolerance = 0.0, int pn
     const double png = maxDifference(readImage(dir / "viewer.png"), readImage(dir / "render.png"));
     std::cout << "viewer vs opal-render on the saved layer: EXR max difference " << exr << " over "
               << truth.channels << " channels, PNG " << png * 255.0 << " codes\n";
-    EXPECT_LE(exr, tolerance);
-    EXPECT_LE(png * 255.0, pngCodes + 1e-6);
+    EXPECT_EQ(exr, 0.0);
+    EXPECT_EQ(png, 0.0);
     EXPECT_GT(channelMean(truth, "subsurface.G"), 0.0) << "the asset is lit";
 }
 
@@ -65,9 +64,7 @@ TEST(Save, AColourTemperatureWarmsTheLightAndIsSaved) {
                                  "\nlight set /_OpalView/KeyLight temperature 2000\n" + saveEverything(dir) + "quit\n");
     const ViewRun run = runOpalView(dir, "--size 480x320 --script " + shellWord(dir / "warm.script"));
     ASSERT_EQ(run.exitCode, 0) << run.err;
-    // Measured 7.6e-6 at one specular pixel, one float step; the unedited candle's saved
-    // layer shows the same step, so it is not the temperature (cause not found).
-    expectOpalRenderMatches(dir, 1e-5);
+    expectOpalRenderMatches(dir);
     const ReadImage white = readImage(dir / "white.exr"), warm = readImage(dir / "viewer.exr");
     const auto redOverBlue = [](const ReadImage& image) {
         return channelMean(image, "subsurface.R") / channelMean(image, "subsurface.B");
@@ -98,8 +95,7 @@ TEST(Save, SphereSpotAndDistantLightsWithTheirOwnParametersAreSaved) {
                                    scriptWord(dir / "saved.usda") + "\nquit\n");
     const ViewRun run = runOpalView(dir, "--size 480x320 --script " + shellWord(dir / "lights.script"));
     ASSERT_EQ(run.exitCode, 0) << run.err;
-    // Measured 7.6e-6 at a specular pixel: one step of its half floats there.
-    expectOpalRenderMatches(dir, 1e-5);
+    expectOpalRenderMatches(dir);
     EXPECT_GT(maxDifference(readImage(dir / "unshaped.exr"), readImage(dir / "viewer.exr")), 1e-3)
         << "the shapes change the picture";
     const std::string layer = slurpFile(dir / "saved.usda");
@@ -146,9 +142,7 @@ def Camera "Camera"
     const ViewRun run = runOpalView(dir, shellWord(dir / "scene.usda") + " --size 480x320 --script " +
                                              shellWord(dir / "turn.script"));
     EXPECT_EQ(run.exitCode, 0) << run.err;
-    // Measured 9.5e-7 at a specular pixel of 0.0015: one step of its half floats there (as
-    // with a colour temperature), the other channels bit-identical.
-    expectOpalRenderMatches(dir, 1e-5);
+    expectOpalRenderMatches(dir);
     scene::AssetCache assets;
     const scene::Scene saved = scene::readScene(dir / "saved.usda", assets);
     const Imath::M44d& sun = saved.lights.at("/Sun").desc.transform;
@@ -195,15 +189,7 @@ TEST(Save, AShadowFieldLightAddedFromABakedLightLayerIsSaved) {
     dir.write("field.script", litByFlame(dir, asset) + saveEverything(dir) + "quit\n");
     const ViewRun run = runOpalView(dir, "--size 480x320 --script " + shellWord(dir / "field.script"));
     ASSERT_EQ(run.exitCode, 0) << run.err;
-    // The viewer's and opal-render's specular under this light differ by one binary16 step
-    // at some pixel (issue 15's open 1-ulp specular difference): measured 1.5e-5 at a pixel of
-    // 0.022, and 1.2e-4 at one of 0.151 (specular.B). One step at values up to 0.25, and
-    // so one PNG code where a pixel's colour lies at a code's edge (measured once, at 9 of
-    // 153,600 pixels). The light and camera the delegate receives are bit-identical in
-    // both programs, and the viewer re-rendering the saved layer matches opal-render
-    // exactly: the difference depends on the viewer's edit history (load, disable the key
-    // light, add the field), not on what the layer saves.
-    expectOpalRenderMatches(dir, 1.25e-4, 1);
+    expectOpalRenderMatches(dir);
     const std::string layer = slurpFile(dir / "saved.usda");
     EXPECT_NE(layer.find("def OpalShadowFieldLight \"Flame\""), std::string::npos) << layer;
     EXPECT_NE(layer.find("@./flame.light.opal@"), std::string::npos) << layer;
@@ -322,13 +308,7 @@ TEST(Save, RenderSettingsChangedInTheViewerAreSavedWithTheScene) {
     const std::string layer = slurpFile(dir / "saved.usda");
     EXPECT_NE(layer.find("bool opal:reference = 1"), std::string::npos) << layer;
     EXPECT_NE(layer.find("int opal:samplesPerPixel = 4"), std::string::npos) << layer;
-    // Switched on in a running session, the delegate's reference differs from one it starts
-    // with in the specular AOV only, by a few float ULPs (measured 3.8e-6 of up to 1.2), which
-    // can round to one binary16 step apart (1.2e-4 at 0.21 in color.B, measured once the
-    // products and the vertex gather summed in another order): one step at values up to 2
-    // (9.8e-4), and so one PNG code at a code's edge. The saved layer opened again renders
-    // exactly what opal-render does.
-    expectOpalRenderMatches(dir, 9.8e-4, 1);
+    expectOpalRenderMatches(dir);
     EXPECT_EQ(maxDifference(readImage(dir / "reopened.exr"), readImage(dir / "render.exr")), 0.0);
 }
 
