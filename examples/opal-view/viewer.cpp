@@ -221,7 +221,7 @@ void Viewer::frame() {
         std::cout << "opal-view: wrote " << screenshot_->string() << std::endl;
         screenshot_.reset();
     }
-    window_.swapBuffers(frameInterval());
+    window_.swapBuffers(frameInterval(), [this] { return pictureWaiting(); });
 }
 
 // 60 frames a second at most (a display without vertical sync would draw as fast as the CPU
@@ -232,6 +232,17 @@ std::chrono::microseconds Viewer::frameInterval() const {
     const SessionStatus status = model_.isOpen() ? model_.session().status() : SessionStatus{};
     const bool relighting = status.busy && status.lastSyncMs > 1000.0 / FramesPerSecond;
     return std::chrono::microseconds(1'000'000 / (softwareOpenGl_ && relighting ? SlowFramesPerSecond : FramesPerSecond));
+}
+
+// What the interface should not wait out its frame interval for: a converted picture to
+// show, or the first pass of an edit not yet asked for (its picture to convert, and the
+// next edit to submit). Without it a picture waited up to two frames for the interface.
+bool Viewer::pictureWaiting() const {
+    if (!model_.isOpen()) return false;
+    if (converter_.ready()) return true;
+    if (converter_.busy()) return false;
+    const RenderSession& session = model_.session();
+    return session.status().applied > requested_.applied && session.firstPassDone();
 }
 
 void Viewer::carryOut(const FileRequest& request) {

@@ -66,6 +66,7 @@ public:
 private:
     void frame();
     std::chrono::microseconds frameInterval() const;  // the interface's pace (frame())
+    bool pictureWaiting() const;                      // ends a frame's wait early
     static constexpr int FramesPerSecond = 60, SlowFramesPerSecond = 30;
     void drawInterface();
     void collectMessages();

@@ -59,11 +59,16 @@ std::pair<int, int> Window::framebufferSize() const {
     return {width, height};
 }
 
-void Window::swapBuffers(std::chrono::microseconds interval) {
+void Window::swapBuffers(std::chrono::microseconds interval, const std::function<bool()>& wakeEarly) {
+    using Clock = std::chrono::steady_clock;
+    constexpr std::chrono::milliseconds Poll{1};
     glfwSwapBuffers(window_);
     const auto next = lastSwap_ + interval;
-    std::this_thread::sleep_until(next);
-    lastSwap_ = std::max(next, std::chrono::steady_clock::now());
+    for (auto now = Clock::now(); now < next; now = Clock::now()) {
+        if (wakeEarly && wakeEarly()) break;
+        std::this_thread::sleep_for(std::min<Clock::duration>(Poll, next - now));
+    }
+    lastSwap_ = Clock::now();
 }
 
 void Window::pollEvents() { glfwPollEvents(); }

@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -28,8 +29,9 @@ public:
     void setTitle(const std::string& title);
     std::pair<int, int> framebufferSize() const;
     // Shows the frame drawn, then waits out the rest of `interval` since the last one (a
-    // display without vertical sync, such as Xvfb, would not wait).
-    void swapBuffers(std::chrono::microseconds interval);
+    // display without vertical sync, such as Xvfb, would not wait), or until wakeEarly(),
+    // asked every millisecond, says there is something to show sooner.
+    void swapBuffers(std::chrono::microseconds interval, const std::function<bool()>& wakeEarly = {});
     void pollEvents();
     // Files dropped on the window since the last call, in the order dropped.
     std::vector<std::filesystem::path> takeDroppedFiles();

@@ -51,6 +51,11 @@ bool PictureConverter::busy() const {
     return queued_ || running_;
 }
 
+bool PictureConverter::ready() const {
+    std::lock_guard lock(mutex_);
+    return done_.has_value();
+}
+
 std::optional<ConvertedPicture> PictureConverter::take() {
     std::lock_guard lock(mutex_);
     std::optional<ConvertedPicture> done;

@@ -51,6 +51,8 @@ public:
     // must stay alive until it is done (drain() before its session goes).
     bool request(PictureRequest request);
     bool busy() const;
+    // A finished picture waits to be taken.
+    bool ready() const;
     // The finished picture, once.
     std::optional<ConvertedPicture> take();
     // Waits until nothing is queued or running.
