@@ -32,9 +32,12 @@ std::uint64_t localityKey(std::uint32_t row, std::uint32_t column) {
 }  // namespace
 
 std::vector<std::uint32_t> haarLocalitySlots(const ChartLayout& layout) {
+    // The key holds a level below 64 and a place's 2 x 15 bits: charts up to 2^16 a side,
+    // beyond anything a sidecar holds (sidecar_checks.h).
+    if (layout.log2Size > 16)
+        throw Error("Haar locality order: charts of 2^" + std::to_string(layout.log2Size) + " cells a side are too large");
     const std::uint32_t S = layout.size();
     const std::size_t perChart = layout.cellsPerChart();
-    if (layout.log2Size > 14) throw Error("Haar locality order: charts of side " + std::to_string(S) + " are too large");
     std::vector<std::uint32_t> chartOrder(perChart);  // chartOrder[q]: the Mallat index at slot q
     std::iota(chartOrder.begin(), chartOrder.end(), 0u);
     std::vector<std::uint64_t> key(perChart);

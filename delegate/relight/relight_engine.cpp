@@ -120,7 +120,7 @@ void RelightEngine::setIrradiance(const IrradianceMoments& irradiance) {
     input_.resize(haar_.size());
     product_.arrangeInput(haar_, W, input_);
 
-    // y_{k,m} = (w1 T_k w0^-1) wE_m, one task per block of rows of every matrix.
+    // y_{k,m} = (w1 T_k w0^-1) wE_m, one task per block of the product's stored rows.
     products_.resize(samples_ * K_ * C);
     tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, std::uint32_t(samples_), kRowsPerTask),
                       [&](const tbb::blocked_range<std::uint32_t>& rows) {

@@ -1,8 +1,10 @@
 #include "delegate/relight/transfer_product.h"
 
 #include "delegate/relight/float4.h"
+#include "schema/asset/sidecar_checks.h"
 #include "schema/error.h"
 
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -192,6 +194,21 @@ void checkSlots(const std::vector<std::uint32_t>& slots, std::size_t samples) {
     }
 }
 
+// A samples x samples CSR matrix with offsets from 0 that never fall, columns strictly
+// ascending within a row and below samples, and finite values (the sidecar reader's checks).
+void checkMatrix(const SparseMatrix& m, std::size_t k, std::size_t samples) {
+    const std::string what = "matrix " + std::to_string(k);
+    if (m.rows != samples || m.cols != samples || m.columns.size() != m.values.size())
+        throw Error("transfer product: " + what + " is " + std::to_string(m.rows) + " x " + std::to_string(m.cols) +
+                    " with " + std::to_string(m.columns.size()) + " columns for " + std::to_string(m.values.size()) +
+                    " values; expected " + std::to_string(samples) + " x " + std::to_string(samples));
+    sidecar::checkOffsets(std::span<const std::uint64_t>(m.rowOffsets), samples, m.values.size(), "transfer product",
+                          what + " offsets");
+    sidecar::checkIndices(std::span<const std::uint64_t>(m.rowOffsets), std::span<const std::uint32_t>(m.columns),
+                          samples, true, "transfer product", what + " columns");
+    sidecar::checkFinite(m.values, "transfer product", what + " values");
+}
+
 }  // namespace
 
 bool TransferProduct::kernelAvailable(Kernel kernel) {
@@ -218,13 +235,7 @@ TransferProduct::TransferProduct(const CompressedTransfer& transfer, std::size_t
         rowAt_.resize(samples);
         for (std::uint32_t j = 0; j < samples; ++j) rowAt_[slots_[j]] = j;
     }
-    for (std::size_t k = 0; k < K_; ++k) {
-        const SparseMatrix& m = transfer.perBasis[k];
-        if (m.rows != samples || m.cols != samples || m.rowOffsets.size() != samples + 1 ||
-            m.rowOffsets.back() != m.values.size() || m.columns.size() != m.values.size())
-            throw Error("transfer product: matrix " + std::to_string(k) + ": shape or offsets do not match " +
-                        std::to_string(samples) + " samples");
-    }
+    tbb::parallel_for(std::size_t(0), K_, [&](std::size_t k) { checkMatrix(transfer.perBasis[k], k, samples); });
     pairs_.resize((K_ + 1) / 2);
     tbb::parallel_for(std::size_t(0), pairs_.size(), [&](std::size_t g) { pairs_[g] = makePair(transfer, 2 * g); });
 }
@@ -250,10 +261,7 @@ TransferProduct::PairPiece TransferProduct::makePairPiece(const CompressedTransf
         keys.clear();
         for (std::size_t h = 0; h < count; ++h) {
             const SparseMatrix& m = transfer.perBasis[first + h];
-            for (std::uint64_t i = m.rowOffsets[r]; i < m.rowOffsets[r + 1]; ++i) {
-                if (m.columns[i] >= samples_ || !std::isfinite(m.values[i]))
-                    throw Error("transfer product: matrix " + std::to_string(first + h) + ", row " + std::to_string(r) +
-                                (m.columns[i] >= samples_ ? ": column index out of range" : ": a value is not finite"));
+            for (std::uint64_t i = m.rowOffsets[r]; i < m.rowOffsets[r + 1]; ++i) {  // checked (checkMatrix)
                 std::uint16_t bits = 0;
                 if (!toNormalHalf(m.values[i], exponent[h], bits)) continue;  // zero or subnormal: dropped
                 const std::uint64_t slot = slots_.empty() ? m.columns[i] : slots_[m.columns[i]];
@@ -343,7 +351,10 @@ void TransferProduct::arrangeInput(std::span<const float> wE, std::size_t lanes,
         std::copy(wE.begin(), wE.end(), x.begin());
         return;
     }
-    for (std::size_t j = 0; j < samples_; ++j) std::copy_n(wE.data() + j * lanes, lanes, x.data() + slots_[j] * lanes);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, samples_, 4096), [&](const tbb::blocked_range<std::size_t>& js) {
+        for (std::size_t j = js.begin(); j != js.end(); ++j)
+            std::copy_n(wE.data() + j * lanes, lanes, x.data() + std::size_t(slots_[j]) * lanes);
+    });
 }
 
 void TransferProduct::multiplyRows(const float* x, std::size_t lanes, float* y, std::size_t C, std::uint32_t begin,
@@ -351,12 +362,15 @@ void TransferProduct::multiplyRows(const float* x, std::size_t lanes, float* y, 
     if ((C != 3 && C != 6 && C != 9) || lanes != (C + 3) / 4 * 4)
         throw Error("transfer product: " + std::to_string(C) + " channels in " + std::to_string(lanes) +
                     " lanes (3, 6 or 9 channels, lanes rounded up to 4)");
+    if (begin > end || end > samples_)
+        throw Error("transfer product: rows [" + std::to_string(begin) + ", " + std::to_string(end) + ") of " +
+                    std::to_string(samples_));
     for (std::size_t g = 0; g < pairs_.size(); ++g) {
         const Pair& pair = pairs_[g];
         const auto rows = [&](const auto* index, auto channels) {
             constexpr std::size_t Cs = decltype(channels)::value;
             using Index = std::remove_cv_t<std::remove_pointer_t<decltype(index)>>;
-                    const PairRows<Index> p{pair.rowOffsets.data(), index, pair.halves.data(), pair.scale,
+            const PairRows<Index> p{pair.rowOffsets.data(), index, pair.halves.data(), pair.scale,
                                     rowAt_.empty() ? nullptr : rowAt_.data(), y, K_, 2 * g, 2 * g + 1 < K_};
 #if OPAL_TRANSFER_PRODUCT_AVX2
             if constexpr (Cs == 6) {

@@ -19,9 +19,7 @@
 // Kernels, chosen at run time: portable; AVX2 + FMA + F16C (one broadcast and one fused
 // multiply-add per value and 8 lanes); AVX-512 for six channels (two moments x RGB, the
 // common case: a pair's two values times one column's 8 lanes in one 16-lane fused
-// multiply-add). Measured on that bunny, a point-light move's products: asset floats 47
-// ms, compact portable 41 ms, compact AVX2 33 ms, AVX-512 one matrix at a time 29.5-31.2
-// ms; with pairs, padded rows and the locality order 20-23 ms (delegate/DELEGATE.md).
+// multiply-add). Timings on that bunny: delegate/DELEGATE.md.
 #pragma once
 
 #include "delegate/relight/scaled_half.h"
@@ -52,8 +50,8 @@ public:
                     std::vector<std::uint32_t> slots = {});
 
     Kernel kernel() const { return kernel_; }
-    // Bytes of the compact matrices (what the delegate reports per mesh, and what a light
-    // edit streams).
+    // Bytes of the compact matrices and the orders (what the delegate reports per mesh; a
+    // light edit streams the matrices).
     std::size_t memoryBytes() const;
 
     std::size_t matrices() const { return K_; }

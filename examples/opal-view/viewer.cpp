@@ -235,14 +235,13 @@ std::chrono::microseconds Viewer::frameInterval() const {
 }
 
 // What the interface should not wait out its frame interval for: a converted picture to
-// show, or the first pass of an edit not yet asked for (its picture to convert, and the
-// next edit to submit). Without it a picture waited up to two frames for the interface.
+// show, or a picture due for converting (refreshPicture's own rule, so that the frame this
+// wakes asks for it and the wait ends once). Without it a picture waited up to two frames
+// for the interface.
 bool Viewer::pictureWaiting() const {
     if (!model_.isOpen()) return false;
     if (converter_.ready()) return true;
-    if (converter_.busy()) return false;
-    const RenderSession& session = model_.session();
-    return session.status().applied > requested_.applied && session.firstPassDone();
+    return !converter_.busy() && duePicture().has_value();
 }
 
 void Viewer::carryOut(const FileRequest& request) {
@@ -351,9 +350,9 @@ void Viewer::refreshReference() {
     if (!error.empty()) hud_.message = "error: reference: " + error;
 }
 
-void Viewer::refreshPicture() {
-    if (!model_.isOpen()) return;
-    showConverted();
+// The session's picture, when one is due for showing: the first pass of a new edit, a
+// settled frame not yet shown settled, or a refinement RefineInterval after the last.
+std::optional<PictureTag> Viewer::duePicture() const {
     // Read before the buffer is: a settled session writes nothing more into it, and a
     // sync's restart has reset the pass count by the time its status is published.
     const bool settled = model_.settled();
@@ -361,11 +360,21 @@ void Viewer::refreshPicture() {
     PictureTag tag = currentTag();
     tag.applied = applied;
     tag.settled = settled;
-    const Clock::time_point now = Clock::now();
     const bool newEdit = tag.passes >= 1 && tag.applied > requested_.applied;
     const bool due = settled ? !(sameFrame(tag, requested_) && requested_.settled)
-                             : newEdit || (!sameFrame(tag, requested_) && now - lastPicture_ >= RefineInterval);
+                             : newEdit || (!sameFrame(tag, requested_) && Clock::now() - lastPicture_ >= RefineInterval);
+    if (!due) return std::nullopt;
+    return tag;
+}
+
+void Viewer::refreshPicture() {
+    if (!model_.isOpen()) return;
+    showConverted();
+    const std::optional<PictureTag> due = duePicture();
     if (!due) return;
+    const PictureTag& tag = *due;
+    const bool settled = tag.settled;
+    const Clock::time_point now = Clock::now();
     if (gpuDisplay()) return uploadSceneLinear(tag);
     PictureRequest request{&model_.session().buffer(settings_.aov), settings_.aov, display_.display(), display_.view(),
                            settings_.grade, tag, settled ? 1 : tag.passes <= 1 ? std::max(2, draftBlock_) : 2};

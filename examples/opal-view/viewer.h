@@ -71,6 +71,7 @@ private:
     void drawInterface();
     void collectMessages();
     void refreshPicture();
+    std::optional<PictureTag> duePicture() const;
     // The picture's new state is on screen: what a drag measures.
     void shown(const PictureTag& tag);
     void showConverted();

@@ -9,8 +9,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numeric>
 #include <random>
+#include <utility>
 #include <vector>
 
 namespace opal {
@@ -79,8 +81,12 @@ void expectProductMatches(const CompressedTransfer& t, std::size_t lanes, std::s
     const std::vector<float> x = paddedInput(N, lanes, C, 7);
     std::vector<float> arranged(x.size(), 0.0f);
     product.arrangeInput(x, lanes, arranged);
-    std::vector<float> y(N * K * C, -1.0f);
-    product.multiplyRows(arranged.data(), lanes, y.data(), C, 0, std::uint32_t(N));
+    // Rows split unevenly, as threads take them: every output written once, whatever order
+    // the rows are stored in.
+    std::vector<float> y(N * K * C, std::numeric_limits<float>::quiet_NaN());
+    const std::uint32_t n = std::uint32_t(N), a = n / 3, b = std::min(n, a + 7);
+    for (const auto& [begin, end] : {std::pair{0u, a}, std::pair{a, b}, std::pair{b, n}})
+        product.multiplyRows(arranged.data(), lanes, y.data(), C, begin, end);
     const Product exact = exactProduct(t, x, lanes, C);
     for (std::size_t i = 0; i < y.size(); ++i)
         ASSERT_NEAR(y[i], exact.y[i], std::ldexp(1.0, -11) * exact.bound[i] + 1e-6 * exact.bound[i]) << "output " << i;
@@ -243,9 +249,17 @@ TEST(TransferProduct, RejectsInconsistentMatrices) {
     t.perBasis[0].values[3] = std::nanf("");
     EXPECT_THROW(TransferProduct(t, 32), Error);
     t = randomTransfer(32, 1);
+    t.perBasis[0].rowOffsets[4] = t.perBasis[0].rowOffsets[2];  // offsets that fall
+    EXPECT_THROW(TransferProduct(t, 32), Error);
+    t = randomTransfer(32, 1);
+    t.perBasis[0].columns[1] = t.perBasis[0].columns[0];  // a column twice in a row
+    EXPECT_THROW(TransferProduct(t, 32), Error);
+    t = randomTransfer(32, 1);
     const TransferProduct product(t, 32);
-    std::vector<float> x(32 * 6), y(32 * 6);
+    std::vector<float> x(32 * 4), y(32 * 3);
     EXPECT_THROW(product.multiplyRows(x.data(), 6, y.data(), 3, 0, 32), Error);  // lanes
+    EXPECT_THROW(product.multiplyRows(x.data(), 4, y.data(), 3, 5, 3), Error);   // rows backwards
+    EXPECT_THROW(product.multiplyRows(x.data(), 4, y.data(), 3, 0, 33), Error);  // past the last row
 }
 
 }  // namespace
