@@ -48,7 +48,6 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr int kWidth = 640, kHeight = 360;
-const std::vector<std::string> kMaterials = {"default", "short", "long"};
 const std::vector<std::string> kCases = {"point", "directional", "dome"};
 
 struct Options {
@@ -56,7 +55,7 @@ struct Options {
     std::vector<std::uint64_t> samples = {4096, 16384, 65536};
     double unitsPerMm = 1.0;  // for --mesh
     std::vector<fs::path> assets;
-    std::vector<std::string> materials = kMaterials;
+    std::vector<std::string> materials = kEndMaterials;
     std::vector<std::string> cases = kCases;
     fs::path env = studioDomeMap();
     fs::path outputDir;
@@ -127,13 +126,6 @@ Subject readSubject(const fs::path& file) {
                  {"source", asset->bake.source}}};
 }
 
-Material materialNamed(const std::string& name, const TranslucentAsset& asset) {
-    const Material& byDefault = asset.defaultMaterial;
-    if (name == "short") return shortestMeanFreePath(asset.range, byDefault.eta);
-    if (name == "long") return longestMeanFreePath(asset.range, byDefault.eta);
-    return byDefault;
-}
-
 // The subsurface (RGB) and primId AOVs of one view, converged.
 struct Render {
     std::vector<float> subsurface, primId;
@@ -162,16 +154,6 @@ Render render(const std::shared_ptr<const TranslucentAsset>& asset, const Materi
     return {{subsurface.data().begin(), subsurface.data().end()},
             {primId.data().begin(), primId.data().end()},
             delegate.totals()};
-}
-
-Json rgbJson(const Rgb& c) { return Json::array({c[0], c[1], c[2]}); }
-
-Json materialJson(const std::string& name, const Material& m) {
-    return {{"name", name},
-            {"sigma_s_prime", rgbJson(m.sigmaSPrime)},
-            {"sigma_a", rgbJson(m.sigmaA)},
-            {"eta", m.eta},
-            {"mean_free_path_mm", rgbJson(meanFreePath(m))}};
 }
 
 // The table's rows as printed while measuring, printed again whole at the end (bake
@@ -328,7 +310,7 @@ int runAccuracyBench(int argc, char** argv) {
     app.add_option("--material", options.materials,
                    "materials (repeatable): the asset's default, and the shortest and longest mean free path of "
                    "its editable range")
-        ->check(CLI::IsMember(kMaterials))
+        ->check(CLI::IsMember(kEndMaterials))
         ->capture_default_str();
     app.add_option("--case", options.cases, "lighting cases (repeatable)")
         ->check(CLI::IsMember(kCases))

@@ -4,8 +4,11 @@
 
 #include "bench/accuracy_targets.h"
 #include "bench/image_accuracy.h"
+#include "schema/scatter/material.h"
 
 #include <nlohmann/json.hpp>
+
+#include <string>
 
 namespace opal::bench {
 
@@ -15,5 +18,7 @@ using Json = nlohmann::ordered_json;
 // chromaticity_error (each {median, p95}), negative_fraction, deepest_negative.
 Json accuracyJson(const ImageAccuracy& a);
 Json targetsJson(const AccuracyTargets& t);
+// name, sigma_s_prime, sigma_a, eta and mean_free_path_mm (RGB arrays, per mm and mm).
+Json materialJson(const std::string& name, const Material& m);
 
 }  // namespace opal::bench

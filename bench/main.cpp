@@ -21,7 +21,8 @@ int main(int argc, char** argv) {
     const std::array subcommands = {opal::bench::basisSubcommand(), opal::bench::bakeSubcommand(),
                                     opal::bench::relightSubcommand(), opal::bench::transferRowSubcommand(),
                                     opal::bench::accuracySubcommand(),
-                                    opal::bench::shadowFieldSubcommand(), opal::bench::compareSubcommand()};
+                                    opal::bench::shadowFieldSubcommand(), opal::bench::compareSubcommand(),
+                                    opal::bench::errorSourcesSubcommand()};
     if (argc < 2) {
         printUsage(stderr, subcommands);
         return 2;

@@ -32,4 +32,11 @@ Material longestMeanFreePath(const EditableRange& range, double eta) {
     return corner(range, range.sigmaSPrimeMin, range.sigmaAMin, eta);
 }
 
+Material materialNamed(const std::string& name, const TranslucentAsset& asset) {
+    const Material& byDefault = asset.defaultMaterial;
+    if (name == "short") return shortestMeanFreePath(asset.range, byDefault.eta);
+    if (name == "long") return longestMeanFreePath(asset.range, byDefault.eta);
+    return byDefault;
+}
+
 }  // namespace opal::bench

@@ -6,7 +6,11 @@
 // maximum and the longest where both are at their minimum, in every channel alike.
 #pragma once
 
+#include "schema/asset/translucent_asset.h"
 #include "schema/scatter/material.h"
+
+#include <string>
+#include <vector>
 
 namespace opal::bench {
 
@@ -18,5 +22,10 @@ Rgb meanFreePath(const Material& material);
 // range is invalid (EditableRange::validate) or eta lies outside it.
 Material shortestMeanFreePath(const EditableRange& range, double eta);
 Material longestMeanFreePath(const EditableRange& range, double eta);
+
+// The materials the benches measure, by name: "default" (the asset's), "short" and "long"
+// (the ends above, at the default's eta).
+inline const std::vector<std::string> kEndMaterials = {"default", "short", "long"};
+Material materialNamed(const std::string& name, const TranslucentAsset& asset);
 
 }  // namespace opal::bench

@@ -22,5 +22,6 @@ Subcommand transferRowSubcommand();
 Subcommand accuracySubcommand();
 Subcommand shadowFieldSubcommand();
 Subcommand compareSubcommand();
+Subcommand errorSourcesSubcommand();
 
 }  // namespace opal::bench

@@ -44,6 +44,18 @@ TEST(MeanFreePathEnds, NoMaterialOfTheBoxLiesBeyondTheEnds) {
         }
 }
 
+TEST(MeanFreePathEnds, MaterialsByNameAreTheDefaultAndTheEnds) {
+    TranslucentAsset asset;
+    asset.range = box();
+    asset.defaultMaterial = {Rgb{1.0, 1.5, 2.0}, Rgb{0.01, 0.02, 0.03}, 1.3};
+    const Material byDefault = materialNamed("default", asset);
+    EXPECT_EQ(byDefault.sigmaSPrime[1], 1.5);
+    EXPECT_EQ(byDefault.sigmaA[2], 0.03);
+    EXPECT_EQ(meanFreePath(materialNamed("short", asset))[0], meanFreePath(shortestMeanFreePath(box(), 1.3))[0]);
+    EXPECT_EQ(meanFreePath(materialNamed("long", asset))[0], meanFreePath(longestMeanFreePath(box(), 1.3))[0]);
+    EXPECT_EQ(materialNamed("long", asset).eta, 1.3);
+}
+
 TEST(MeanFreePathEnds, EtaOutsideTheRangeIsAnError) {
     EXPECT_THROW(shortestMeanFreePath(box(), 1.7), Error);
     EXPECT_THROW(longestMeanFreePath(EditableRange{}, 1.3), Error);  // empty intervals

@@ -1,0 +1,171 @@
+// `opal-bench error-sources --asset A.usda`: which step a dome image's error against the
+// exact reference comes from, measured per sample (before the vertices and pixels blend
+// it), for the asset's default material and the two ends of its editable range
+// (bench/mean_free_path_ends.h):
+//
+//   irradiance        the dome's E through the baked vectors (the engine's,
+//                     MeshIrradiance::exactIrradiance) against the brute-force hemisphere
+//                     integral (MeshIrradiance::referenceIrradiance)
+//   transfer, dome    the engine's L against the exact gather of the engine's own E: the
+//                     compressed transfer alone, under the dome's light
+//   transfer, uniform the same with E = 1 at every sample: the transfer's error without
+//                     the light's contrast
+//   whole             the engine's L against the exact gather of the reference E: what
+//                     `opal-bench accuracy --case dome` sees, at the samples
+//
+// each as bench/image_accuracy.h's figures with a sample in place of a pixel (relative
+// RMSE; per-sample luminance error over the samples whose reference is at least 1% of the
+// 99th percentile, median and 95th percentile, and over the darker half of them;
+// chromaticity). The dome is the map with the identity transform, as `opal-bench
+// accuracy` lights it. Three exact gathers per material: O(N^2) each (seconds at 16,384
+// samples, minutes at 65,536). Findings: docs/ARCHITECTURE.md#compression.
+#include "bench/accuracy_json.h"
+#include "bench/image_accuracy.h"
+#include "bench/mean_free_path_ends.h"
+#include "bench/shared_assets.h"
+#include "bench/subcommand.h"
+
+#include "delegate/dome_texture.h"
+#include "delegate/relight/mesh_irradiance.h"
+#include "delegate/relight/reference_gather.h"
+#include "delegate/relight/relight_engine.h"
+#include "schema/asset/asset_layer.h"
+#include "schema/error.h"
+#include "schema/usd/atomic_file.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace opal::bench {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Options {
+    std::string asset, jsonFile;
+    fs::path env = studioDomeMap();
+    std::vector<std::string> materials = kEndMaterials;
+};
+
+std::vector<float> copyOf(std::span<const float> values) { return {values.begin(), values.end()}; }
+
+// The engine's L and E for the material under the given moments.
+std::pair<std::vector<float>, std::vector<float>> relight(const std::shared_ptr<const TranslucentAsset>& asset,
+                                                          const Material& material,
+                                                          const IrradianceMoments& moments) {
+    RelightEngine engine(asset);
+    engine.setMaterial(material);
+    engine.setIrradiance(moments);
+    return {copyOf(engine.sampleRadiance()), copyOf(engine.sampleIrradiance())};
+}
+
+// E_0 = 1 at every sample and channel, the other moments 0: E = c_0(eta), the same everywhere.
+IrradianceMoments uniformMoments(const IrradianceMoments& shape) {
+    IrradianceMoments uniform(shape.samples, shape.terms, shape.basis);
+    for (std::size_t i = 0; i < uniform.samples; ++i)
+        for (int c = 0; c < 3; ++c) uniform.sample(i)[c] = 1.0f;
+    return uniform;
+}
+
+ImageAccuracy perSample(std::span<const float> engine, std::span<const float> reference) {
+    const std::vector<std::uint8_t> every(reference.size() / 3, 1);
+    return measureAccuracy(engine, reference, every);
+}
+
+void printRow(const std::string& material, const char* source, const ImageAccuracy& a) {
+    std::printf("%-8s %-18s %9.4f %8.4f %8.4f %8.4f %8.4f\n", material.c_str(), source, a.relativeRmse,
+                a.luminance.median, a.luminance.p95, a.darkerHalf.p95, a.chromaticity.p95);
+    std::fflush(stdout);
+}
+
+Json measureMaterial(const std::shared_ptr<const TranslucentAsset>& asset, MeshIrradiance& dome,
+                     const std::string& name) {
+    const Material material = materialNamed(name, *asset);
+    const std::vector<float> engineE = dome.exactIrradiance(material.eta);
+    const std::vector<float> referenceE = dome.referenceIrradiance(material.eta);
+    const auto [domeL, domeE] = relight(asset, material, dome.moments());
+    const auto [uniformL, uniformE] = relight(asset, material, uniformMoments(dome.moments()));
+
+    const std::pair<const char*, ImageAccuracy> sources[] = {
+        {"irradiance", perSample(engineE, referenceE)},
+        {"transfer_dome", perSample(domeL, referenceGather(*asset, material, domeE))},
+        {"transfer_uniform", perSample(uniformL, referenceGather(*asset, material, uniformE))},
+        {"whole", perSample(domeL, referenceGather(*asset, material, referenceE))},
+    };
+    Json j = {{"material", materialJson(name, material)}};
+    for (const auto& [source, a] : sources) {
+        printRow(name, source, a);
+        j[source] = accuracyJson(a);
+    }
+    return j;
+}
+
+int run(const Options& options) {
+    std::vector<std::string> warnings;
+    auto asset = std::make_shared<const TranslucentAsset>(readAsset(options.asset, &warnings));
+    for (const std::string& w : warnings) std::printf("  warning: %s\n", w.c_str());
+    if (asset->environment.offsets.empty())
+        throw Error("asset '" + options.asset + "' has no environment transfer: nothing lights it as a dome");
+    if (std::error_code ec; !fs::is_regular_file(options.env, ec))
+        throw Error("environment map '" + options.env.string() + "' not found (pass --env, or set OPAL_SHARED_ASSETS)");
+    hd::LightDesc desc;
+    desc.kind = hd::LightKind::Dome;
+    desc.textureFile = options.env.string();
+    DomeTextureCache textures;
+    const auto light = std::make_shared<const EnvironmentLight>(
+        EnvironmentLight::fromDesc(textures.get(desc.textureFile, desc.textureColorSpace), desc));
+    MeshIrradiance dome(asset, Imath::M44d());
+    dome.setLight(hd::SdfPath("/Dome"), light);
+
+    std::printf("opal-bench error-sources: %s, %zu samples, dome %s; per-sample figures (bench/image_accuracy.h)\n",
+                options.asset.c_str(), asset->samples.size(), options.env.c_str());
+    std::printf("%-8s %-18s %9s %8s %8s %8s %8s\n", "material", "source", "rel.RMSE", "Y med", "Y p95", "dark p95",
+                "chr p95");
+    Json results = Json::array();
+    for (const std::string& name : options.materials) results.push_back(measureMaterial(asset, dome, name));
+    if (!options.jsonFile.empty()) {
+        const Json j = {{"asset", options.asset},
+                        {"env", options.env.string()},
+                        {"samples", asset->samples.size()},
+                        {"results", results}};
+        writeFileAtomically(options.jsonFile, j.dump(2) + "\n");
+        std::printf("wrote %s\n", options.jsonFile.c_str());
+    }
+    return 0;
+}
+
+int runErrorSources(int argc, char** argv) {
+    CLI::App app{"Per sample, which step a dome image's error comes from: the dome's irradiance or the compressed "
+                 "transfer (under the dome, and under uniform light)",
+                 "opal-bench error-sources"};
+    Options options;
+    app.add_option("--asset", options.asset, "the baked asset (ASSET.usda)")->required();
+    app.add_option("--env", options.env, "the dome's lat-long map (default: the studio map in $OPAL_SHARED_ASSETS)");
+    app.add_option("--material", options.materials,
+                   "materials (repeatable): the asset's default, and the shortest and longest mean free path of "
+                   "its editable range")
+        ->check(CLI::IsMember(kEndMaterials))
+        ->capture_default_str();
+    app.add_option("--json", options.jsonFile, "also write every figure as JSON to this file");
+    CLI11_PARSE(app, argc, argv);
+    try {
+        return run(options);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "opal-bench error-sources: %s\n", e.what());
+        return 1;
+    }
+}
+
+}  // namespace
+
+Subcommand errorSourcesSubcommand() {
+    return {"error-sources", "which step a dome image's error comes from, per sample", runErrorSources};
+}
+
+}  // namespace opal::bench
