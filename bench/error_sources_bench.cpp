@@ -73,11 +73,6 @@ IrradianceMoments uniformMoments(const IrradianceMoments& shape) {
     return uniform;
 }
 
-ImageAccuracy perSample(std::span<const float> engine, std::span<const float> reference) {
-    const std::vector<std::uint8_t> every(reference.size() / 3, 1);
-    return measureAccuracy(engine, reference, every);
-}
-
 void printRow(const std::string& material, const char* source, const ImageAccuracy& a) {
     std::printf("%-8s %-18s %9.4f %8.4f %8.4f %8.4f %8.4f\n", material.c_str(), source, a.relativeRmse,
                 a.luminance.median, a.luminance.p95, a.darkerHalf.p95, a.chromaticity.p95);
@@ -93,10 +88,10 @@ Json measureMaterial(const std::shared_ptr<const TranslucentAsset>& asset, MeshI
     const auto [uniformL, uniformE] = relight(asset, material, uniformMoments(dome.moments()));
 
     const std::pair<const char*, ImageAccuracy> sources[] = {
-        {"irradiance", perSample(engineE, referenceE)},
-        {"transfer_dome", perSample(domeL, referenceGather(*asset, material, domeE))},
-        {"transfer_uniform", perSample(uniformL, referenceGather(*asset, material, uniformE))},
-        {"whole", perSample(domeL, referenceGather(*asset, material, referenceE))},
+        {"irradiance", measureAccuracy(engineE, referenceE)},
+        {"transfer_dome", measureAccuracy(domeL, referenceGather(*asset, material, domeE))},
+        {"transfer_uniform", measureAccuracy(uniformL, referenceGather(*asset, material, uniformE))},
+        {"whole", measureAccuracy(domeL, referenceGather(*asset, material, referenceE))},
     };
     Json j = {{"material", materialJson(name, material)}};
     for (const auto& [source, a] : sources) {

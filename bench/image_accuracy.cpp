@@ -35,6 +35,11 @@ double percentile(std::span<double> values, double p) {
 }
 
 ImageAccuracy measureAccuracy(std::span<const float> engine, std::span<const float> reference,
+                              const Imath::V3d& luminance) {
+    return measureAccuracy(engine, reference, std::vector<std::uint8_t>(reference.size() / 3, 1), luminance);
+}
+
+ImageAccuracy measureAccuracy(std::span<const float> engine, std::span<const float> reference,
                               std::span<const std::uint8_t> mask, const Imath::V3d& luminance) {
     if (engine.size() != reference.size() || engine.size() != 3 * mask.size())
         throw Error("image accuracy: engine (" + std::to_string(engine.size()) + " floats), reference (" +

@@ -19,6 +19,7 @@
 
 #include <cstdint>
 #include <span>
+#include <vector>
 
 namespace opal::bench {
 
@@ -39,6 +40,10 @@ struct ImageAccuracy {
 // shows the asset. Throws opal::Error for sizes that do not match or an empty mask.
 ImageAccuracy measureAccuracy(std::span<const float> engine, std::span<const float> reference,
                               std::span<const std::uint8_t> mask, const Imath::V3d& luminance = kAcescgLuminance);
+
+// The same over every pixel (or per-sample values, a sample a pixel).
+ImageAccuracy measureAccuracy(std::span<const float> engine, std::span<const float> reference,
+                              const Imath::V3d& luminance = kAcescgLuminance);
 
 // The p-th percentile (p in [0, 1]) of `values` by nearest rank on the sorted values; 0
 // for none. Reorders `values`.

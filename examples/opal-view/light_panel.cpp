@@ -4,6 +4,7 @@
 #include "examples/opal-view/core/edited_scene.h"
 #include "examples/opal-view/core/light_flicker_edit.h"
 #include "examples/opal-view/core/light_shape.h"
+#include "examples/opal-view/core/prim_path.h"
 #include "examples/scene/scene_lights.h"
 #include "schema/error.h"
 
@@ -70,7 +71,7 @@ void lightList(ViewerModel& model) {
 void lightNaming(ViewerModel& model, const hd::SdfPath& path, std::string& problem) {
     static constexpr std::size_t NameLength = 128;
     char name[NameLength] = {};
-    const std::string leaf = path.substr(path.find_last_of('/') + 1);
+    const std::string leaf = primName(path);
     leaf.copy(name, NameLength - 1);
     try {
         if (ImGui::InputText("name", name, NameLength, ImGuiInputTextFlags_EnterReturnsTrue)) {

@@ -44,6 +44,21 @@ TEST(ImageAccuracy, AUniformScaleIsItsOwnRelativeError) {
     EXPECT_EQ(a.negativeFraction, 0.0);
 }
 
+TEST(ImageAccuracy, WithoutAMaskEveryPixelCounts) {
+    std::vector<float> reference, engine;
+    for (int p = 0; p < 50; ++p)
+        for (int c = 0; c < 3; ++c) {
+            reference.push_back(0.1f * float(p + 1 + c));
+            engine.push_back(0.1f * float(p + 1 + c) * (p % 3 == 0 ? 1.05f : 0.99f));
+        }
+    const ImageAccuracy every = measureAccuracy(engine, reference);
+    const ImageAccuracy masked = measureAccuracy(engine, reference, std::vector<std::uint8_t>(50, 1));
+    EXPECT_EQ(every.pixels, 50u);
+    EXPECT_EQ(every.relativeRmse, masked.relativeRmse);
+    EXPECT_EQ(every.luminance.p95, masked.luminance.p95);
+    EXPECT_NEAR(every.luminance.p95, 0.05, 1e-5);
+}
+
 TEST(ImageAccuracy, DimPixelsAndTheDarkerHalfAreSeparated) {
     // 100 bright pixels exact; 100 darker ones 10% off; 10 nearly black ones 100% off.
     std::vector<float> reference, engine;

@@ -180,13 +180,7 @@ std::vector<float> basisGather(const TranslucentAsset& asset, const Material& ma
 
 // sqrt(sum (a - b)^2 / sum b^2) over every sample and channel.
 double relativeRmse(std::span<const float> a, std::span<const float> b) {
-    double error = 0.0, norm = 0.0;
-    for (std::size_t j = 0; j < b.size(); ++j) {
-        const double d = double(a[j]) - double(b[j]);
-        error += d * d;
-        norm += double(b[j]) * double(b[j]);
-    }
-    return std::sqrt(error / norm);
+    return bench::measureAccuracy(a, b).relativeRmse;
 }
 
 // ---- the measurement ----------------------------------------------------------------
@@ -229,11 +223,10 @@ Measured measure(const std::shared_ptr<const TranslucentAsset>& asset, LightCase
                                               ? irradiance.referenceIrradiance(m.eta)
                                               : std::vector<float>(engineE.begin(), engineE.end());
     const std::vector<float> reference = referenceGather(*asset, m, referenceE);
-    const std::vector<std::uint8_t> all(asset->samples.size(), 1);
     // The basis alone is measured at the engine's E: for analytic lights that is `reference`.
     const std::vector<float> referenceAtEngineE =
         light == LightCase::Dome ? referenceGather(*asset, m, engineE) : reference;
-    return {bench::measureAccuracy(engine.sampleRadiance(), reference, all),
+    return {bench::measureAccuracy(engine.sampleRadiance(), reference),
             relativeRmse(basisGather(*asset, m, engineE), referenceAtEngineE), engine.radianceNoise(),
             highestZeroedTruth(engine.sampleRadiance(), reference), highestZeroedTruth(engineE, referenceE),
             std::size_t(std::count_if(engineE.begin(), engineE.end(), [](float e) { return e < 0.0f; }))};

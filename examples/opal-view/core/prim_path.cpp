@@ -40,6 +40,8 @@ void requireNewPrimPath(const scene::Scene& scene, const hd::SdfPath& path) {
         throw Error("the scene already has a prim at <" + path + ">");
 }
 
+std::string primName(const hd::SdfPath& path) { return path.substr(path.find_last_of('/') + 1); }
+
 hd::SdfPath siblingPath(const hd::SdfPath& path, std::string_view name) {
     return path.substr(0, path.find_last_of('/') + 1) + std::string(name);
 }

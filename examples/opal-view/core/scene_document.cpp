@@ -1,6 +1,7 @@
 #include "examples/opal-view/core/scene_document.h"
 
 #include "examples/opal-view/core/new_light.h"
+#include "examples/opal-view/core/prim_path.h"
 #include "examples/opal-view/core/scene_bounds.h"
 #include "examples/scene/render_setup.h"
 #include "examples/scene/scene_reader.h"
@@ -34,13 +35,11 @@ bool usesViewerRoot(const scene::Scene& scene) {
     return under(scene.meshes) || under(scene.materials) || under(scene.lights) || under(scene.cameras);
 }
 
-std::string leafName(const hd::SdfPath& path) { return path.substr(path.find_last_of('/') + 1); }
-
 // Every unbound mesh gets its own material prim holding the asset's default.
 void bindEditableMaterials(scene::Scene& scene) {
     for (auto& [path, mesh] : scene.meshes) {
         if (!mesh.desc.material.empty()) continue;
-        const hd::SdfPath material = ViewerRoot + "/Materials/" + leafName(path);
+        const hd::SdfPath material = ViewerRoot + "/Materials/" + primName(path);
         hd::MaterialDesc desc;
         desc.subsurface = mesh.desc.asset->defaultMaterial;
         scene.materials[material] = {desc, {}};
