@@ -41,8 +41,9 @@ void drawHud(const ViewerModel& model, const HudFigures& figures) {
     const SessionStatus status = model.session().status();
     const SceneSize size = sceneSize(model.scene());
     const int target = stat(delegate.renderSettings(), "opal:samplesPerPixel", 0);
-    ImGui::Text("frame %.1f ms | relight %.1f ms%s | %d / %d spp%s | %zu samples, %zu triangles", figures.frameMs,
-                status.lastSyncMs, status.busy ? " (relighting)" : "", stat(stats, "samplesPerPixel", 0), target,
+    const double fps = figures.frameMs > 0.0 ? 1000.0 / figures.frameMs : 0.0;
+    ImGui::Text("%.0f fps (draw %.1f ms) | relight %.1f ms%s | %d / %d spp%s | %zu samples, %zu triangles", fps,
+                figures.drawMs, status.lastSyncMs, status.busy ? " (relighting)" : "", stat(stats, "samplesPerPixel", 0), target,
                 stat(stats, "converged", false) ? " converged" : "", size.samples, size.triangles);
     if (model.animated())
         ImGui::Text("time code %.2f (%.3f s)%s", model.timeCode(), model.timeCode() / model.scene().timeCodesPerSecond,

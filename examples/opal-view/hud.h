@@ -1,4 +1,5 @@
-// The heads-up line over the picture: interface frame time, the last relight (sync), the
+// The heads-up line over the picture: the interface's frame rate and its own drawing time
+// per frame (without the wait that paces it), the last relight (sync), the
 // samples per pixel the picture holds so far, and the scene's size; the newest message
 // (a delegate warning or error) under it.
 #pragma once
@@ -10,7 +11,8 @@
 namespace opal::view {
 
 struct HudFigures {
-    double frameMs = 0.0;
+    double frameMs = 0.0;  // from one frame's start to the next's: 1000 / the frame rate
+    double drawMs = 0.0;   // of that, all but the wait that paces the frames
     std::string message;
 };
 

@@ -186,6 +186,7 @@ void Viewer::frame() {
     openDropped();
     const Clock::time_point now = Clock::now();
     hud_.frameMs = std::chrono::duration<double, std::milli>(now - lastFrame_).count();
+    hud_.drawMs = std::max(0.0, hud_.frameMs - std::chrono::duration<double, std::milli>(lastWait_).count());
     lastFrame_ = now;
     imgui_.beginFrame();
     const auto [width, height] = window_.framebufferSize();
@@ -221,7 +222,7 @@ void Viewer::frame() {
         std::cout << "opal-view: wrote " << screenshot_->string() << std::endl;
         screenshot_.reset();
     }
-    window_.swapBuffers(frameInterval(), [this] { return pictureWaiting(); });
+    lastWait_ = window_.swapBuffers(frameInterval(), [this] { return pictureWaiting(); });
 }
 
 // 60 frames a second at most (a display without vertical sync would draw as fast as the CPU

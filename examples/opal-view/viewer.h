@@ -128,6 +128,7 @@ private:
     std::optional<EditLatency> measure_;   // while a script's drag runs
     bool quit_ = false, everyAov_ = false;
     std::chrono::steady_clock::time_point lastPicture_, lastFrame_;
+    std::chrono::steady_clock::duration lastWait_{};  // the last frame's pacing wait (Window::swapBuffers)
     ViewerModel model_;  // its render session goes before everything above
     PictureConverter converter_;  // stops reading the session's buffers first
     WipeState wipe_;

@@ -59,16 +59,18 @@ std::pair<int, int> Window::framebufferSize() const {
     return {width, height};
 }
 
-void Window::swapBuffers(std::chrono::microseconds interval, const std::function<bool()>& wakeEarly) {
+std::chrono::steady_clock::duration Window::swapBuffers(std::chrono::microseconds interval,
+                                                        const std::function<bool()>& wakeEarly) {
     using Clock = std::chrono::steady_clock;
     constexpr std::chrono::milliseconds Poll{1};
     glfwSwapBuffers(window_);
-    const auto next = lastSwap_ + interval;
-    for (auto now = Clock::now(); now < next; now = Clock::now()) {
+    const auto swapped = Clock::now(), next = lastSwap_ + interval;
+    for (auto now = swapped; now < next; now = Clock::now()) {
         if (wakeEarly && wakeEarly()) break;
         std::this_thread::sleep_for(std::min<Clock::duration>(Poll, next - now));
     }
     lastSwap_ = Clock::now();
+    return lastSwap_ - swapped;
 }
 
 void Window::pollEvents() { glfwPollEvents(); }

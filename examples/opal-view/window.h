@@ -30,8 +30,10 @@ public:
     std::pair<int, int> framebufferSize() const;
     // Shows the frame drawn, then waits out the rest of `interval` since the last one (a
     // display without vertical sync, such as Xvfb, would not wait), or until wakeEarly(),
-    // asked every millisecond, says there is something to show sooner.
-    void swapBuffers(std::chrono::microseconds interval, const std::function<bool()>& wakeEarly = {});
+    // asked every millisecond, says there is something to show sooner. Returns how long it
+    // waited after the swap.
+    std::chrono::steady_clock::duration swapBuffers(std::chrono::microseconds interval,
+                                                    const std::function<bool()>& wakeEarly = {});
     void pollEvents();
     // Files dropped on the window since the last call, in the order dropped.
     std::vector<std::filesystem::path> takeDroppedFiles();
