@@ -250,24 +250,24 @@ KeptColumns keptColumns(const Step1Columns& columns, const ChartLayout& layout, 
             transformColumn(columns, j, layout, weights.synthesisNorms, columnWeight(layout, weights, k, j), s.dense,
                             s.charts, [&](std::size_t p, float c, float e) {
                                 if (energyBin(e) < minBin) return;
-                                part.p.push_back(std::uint32_t(p));
+                                part.row.push_back(std::uint32_t(p));
                                 part.value.push_back(c);
                             });
-            part.offsets.push_back(part.p.size());
+            part.offsets.push_back(part.row.size());
         }
         stage.advance(end - begin);
     });
     KeptColumns kept;
     kept.first = columns.first;
     std::size_t total = 0;
-    for (const KeptColumns& part : parts) total += part.p.size();
+    for (const KeptColumns& part : parts) total += part.row.size();
     kept.offsets.reserve(columns.count() + 1);
-    kept.p.reserve(total);
+    kept.row.reserve(total);
     kept.value.reserve(total);
     for (KeptColumns& part : parts) {
-        const std::uint64_t base = kept.p.size();
+        const std::uint64_t base = kept.row.size();
         for (std::size_t c = 1; c < part.offsets.size(); ++c) kept.offsets.push_back(base + part.offsets[c]);
-        kept.p.insert(kept.p.end(), part.p.begin(), part.p.end());
+        kept.row.insert(kept.row.end(), part.row.begin(), part.row.end());
         kept.value.insert(kept.value.end(), part.value.begin(), part.value.end());
         part = KeptColumns{};
     }
@@ -280,7 +280,7 @@ KeptMatrixAssembler::KeptMatrixAssembler(std::size_t n) {
 }
 
 void KeptMatrixAssembler::count(const KeptColumns& block) {
-    for (const std::uint32_t p : block.p) {
+    for (const std::uint32_t p : block.row) {
         if (p >= matrix_.rows)
             throw Error("transfer step 2: kept coefficient at output " + std::to_string(p) + " of " +
                         std::to_string(matrix_.rows));
@@ -298,7 +298,7 @@ void KeptMatrixAssembler::fill(const KeptColumns& block) {
     }
     for (std::size_t c = 0; c < block.count(); ++c)
         for (std::uint64_t e = block.offsets[c]; e < block.offsets[c + 1]; ++e) {
-            const std::uint32_t p = block.p[e];
+            const std::uint32_t p = block.row[e];
             if (p >= matrix_.rows || cursor_[p] >= matrix_.rowOffsets[p + 1])
                 throw Error("transfer step 2: the kept columns filled differ from the ones counted (output " +
                             std::to_string(p) + ")");

@@ -50,16 +50,21 @@ std::vector<Step1Rows> compressRows(const TransferPlan& plan, const TransferSamp
                                     const BasisLookup& lookup, std::size_t begin, std::size_t end,
                                     ProgressSink* progress, const CancelToken& cancel);
 
-// Step 1's coefficients of T_k for columns [first, first + count()): column j holds (o,
-// value) with o ascending; zero values (the rows' padding) are dropped.
-struct Step1Columns {
+// Columns [first, first + count()) of one sparse N x N matrix, column by column: column
+// first + c holds the entries offsets[c] .. offsets[c + 1] - 1 of row and value, rows
+// ascending.
+struct ColumnBlock {
     std::size_t first = 0;
-    std::vector<std::uint64_t> offsets;  // count() + 1
+    std::vector<std::uint64_t> offsets{0};  // count() + 1
     std::vector<std::uint32_t> row;
     std::vector<float> value;
 
     std::size_t count() const { return offsets.empty() ? 0 : offsets.size() - 1; }
 };
+
+// Step 1's coefficients of T_k regrouped by column: rows are output samples o; zero values
+// (the rows' padding) are dropped.
+using Step1Columns = ColumnBlock;
 
 // Regroups entries by column for columns [begin, end). forEachEntry(visit) must call
 // visit(o, j, value) for every entry, o ascending, the same entries each time: it is
@@ -115,17 +120,9 @@ EnergyHistogram histogramOfColumns(const Step1Columns& columns, const ChartLayou
                                    const Step2Weights& weights, std::size_t k, const StageScope& stage,
                                    const CancelToken& cancel);
 
-// Step 2's second pass: per column (first .. first + count() - 1), the coefficients whose
-// energy bin is at least minBin, p ascending, in flat arrays: column c's are the entries
-// offsets[c] .. offsets[c + 1] - 1 of p (output positions) and value.
-struct KeptColumns {
-    std::size_t first = 0;
-    std::vector<std::uint64_t> offsets{0};
-    std::vector<std::uint32_t> p;
-    std::vector<float> value;
-
-    std::size_t count() const { return offsets.size() - 1; }
-};
+// Step 2's second pass: per column, the coefficients whose energy bin is at least minBin;
+// rows are output 9/7 positions p.
+using KeptColumns = ColumnBlock;
 
 KeptColumns keptColumns(const Step1Columns& columns, const ChartLayout& layout, const Step2Weights& weights,
                         std::size_t k, int minBin, const StageScope& stage, const CancelToken& cancel);

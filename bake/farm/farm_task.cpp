@@ -205,10 +205,10 @@ void runKeep(const TaskContext& c, std::uint32_t index, const CancelToken& cance
         std::vector<std::uint32_t> counts(kept.count());
         for (std::size_t j = 0; j < counts.size(); ++j) counts[j] = std::uint32_t(kept.offsets[j + 1] - kept.offsets[j]);
         SectionWriter w;
-        w.reserve(4 * sizeof(std::uint64_t) + counts.size() * 4 + kept.p.size() * 8);
+        w.reserve(4 * sizeof(std::uint64_t) + counts.size() * 4 + kept.row.size() * 8);
         w.u64(kept.first);
         w.array(counts);
-        w.array(kept.p);
+        w.array(kept.row);
         w.array(kept.value);
         file.add(w.take());
     }
@@ -234,7 +234,7 @@ KeptColumns readKept(const TaskContext& c, const TaskFile& file, std::uint32_t i
         kept.offsets[j + 1] = kept.offsets[j] + counts[j];
     }
     if (kept.offsets.back() != p.size()) r.fail("counts", "leave entries over");
-    kept.p = std::move(p);
+    kept.row = std::move(p);
     kept.value = std::move(values);
     return kept;
 }
