@@ -5,6 +5,7 @@
 // installed plugin and OCIO config (the EXR says which config), and no installed file,
 // RUNPATH included, may name the build tree.
 #include "tests/support/open_temp_dir.h"
+#include "tests/support/scene_usda.h"
 
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
@@ -53,39 +54,11 @@ bool mentions(const fs::path& file, const std::string& text) {
 bool isElf(const fs::path& file) { return test::fileContents(file).starts_with("\x7f" "ELF"); }
 
 // The wick (about 2.7 x 11.5 mm, 72.5-84 mm up) lit from the front, seen from 30 mm.
-constexpr const char* WickScene = R"(#usda 1.0
-(
-    metersPerUnit = 0.001
-)
-
-def "Wick" (
-    references = @./wick.usda@
-)
-{
+std::string wickScene() {
+    using namespace test::usda;
+    return header() + reference("Wick", "./wick.usda") + pointLight("Bulb", "2000", translate({0.6, 80, 20})) +
+           camera("Camera", translate({0.6, 78, 30})) + renderSettings(48, 32);
 }
-
-def SphereLight "Bulb"
-{
-    float inputs:intensity = 2000
-    bool treatAsPoint = 1
-    double3 xformOp:translate = (0.6, 80, 20)
-    uniform token[] xformOpOrder = ["xformOp:translate"]
-}
-
-def Camera "Camera"
-{
-    float focalLength = 50
-    float horizontalAperture = 36
-    float verticalAperture = 24
-    double3 xformOp:translate = (0.6, 78, 30)
-    uniform token[] xformOpOrder = ["xformOp:translate"]
-}
-
-def RenderSettings "Settings"
-{
-    uniform int2 resolution = (48, 32)
-}
-)";
 
 class InstallTree : public ::testing::Test {
 protected:
@@ -155,7 +128,7 @@ TEST_F(InstallTree, ListsTheInstalledDelegate) {
 TEST_F(InstallTree, BakesAndRendersWithTheInstalledProgramsOnly) {
     const ProcessRun bake = runInstalled(prefix, work.path(), "opal-bake builtin:wick --samples 256 -o wick --quiet");
     ASSERT_EQ(bake.exitCode, 0) << bake.err;
-    std::ofstream(work / "scene.usda") << WickScene;
+    std::ofstream(work / "scene.usda") << wickScene();
     const ProcessRun render = runInstalled(prefix, work.path(), "opal-render scene.usda -o out.exr --preview out.png");
     ASSERT_EQ(render.exitCode, 0) << render.err;
     EXPECT_TRUE(fs::is_regular_file(work / "out.png"));

@@ -6,6 +6,7 @@
 #include "tests/scene/candle_scene_assets.h"
 #include "tests/scene/opal_render_process.h"
 #include "tests/scene/scene_test_files.h"
+#include "tests/support/scene_usda.h"
 #include "tests/render/render_scene.h"
 
 #include <OpenImageIO/imageio.h>
@@ -27,39 +28,9 @@ namespace {
 
 // The 5 mm sphere at the origin, a point light in front of it, a camera 30 mm away.
 std::string litScene(const std::string& intensity) {
-    return R"(#usda 1.0
-(
-    metersPerUnit = 0.001
-)
-
-def "Sphere" (
-    references = @./sphere.usda@
-)
-{
-}
-
-def SphereLight "Bulb"
-{
-    float inputs:intensity = )" + intensity + R"(
-    bool treatAsPoint = 1
-    double3 xformOp:translate = (0, 5, 20)
-    uniform token[] xformOpOrder = ["xformOp:translate"]
-}
-
-def Camera "Camera"
-{
-    float focalLength = 50
-    float horizontalAperture = 36
-    float verticalAperture = 24
-    double3 xformOp:translate = (0, 0, 30)
-    uniform token[] xformOpOrder = ["xformOp:translate"]
-}
-
-def RenderSettings "Settings"
-{
-    uniform int2 resolution = (48, 32)
-}
-)";
+    using namespace test::usda;
+    return header() + reference("Sphere", "./sphere.usda") + pointLight("Bulb", intensity, translate({0, 5, 20})) +
+           camera("Camera", translate({0, 0, 30})) + renderSettings(48, 32);
 }
 
 std::vector<std::string> channelNames(const OIIO::ImageSpec& spec) {

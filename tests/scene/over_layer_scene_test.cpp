@@ -10,6 +10,7 @@
 #include "tests/bake/over_layer_scenes.h"
 #include "tests/scene/opal_render_process.h"
 #include "tests/scene/scene_test_files.h"
+#include "tests/support/scene_usda.h"
 
 #include <gtest/gtest.h>
 
@@ -22,29 +23,9 @@ namespace {
 // A key light, a camera 46 mm in front of the cube (which the user's layer puts at
 // (4, -2, -6)), and a small image.
 std::string lightsAndCamera() {
-    return R"(
-def SphereLight "Key"
-{
-    float inputs:intensity = 6000
-    bool treatAsPoint = 1
-    double3 xformOp:translate = (25, 20, 20)
-    uniform token[] xformOpOrder = ["xformOp:translate"]
-}
-
-def Camera "Camera"
-{
-    float focalLength = 50
-    float horizontalAperture = 36
-    float verticalAperture = 24
-    double3 xformOp:translate = (4, -2, 40)
-    uniform token[] xformOpOrder = ["xformOp:translate"]
-}
-
-def RenderSettings "Settings"
-{
-    uniform int2 resolution = (60, 40)
-}
-)";
+    using namespace test::usda;
+    return "\n" + pointLight("Key", "6000", translate({25, 20, 20})) + camera("Camera", translate({4, -2, 40})) +
+           renderSettings(60, 40);
 }
 
 std::string stackScene(const std::string& subLayers) {

@@ -8,6 +8,7 @@
 #include "delegate/render_delegate.h"
 #include "examples/opal-view/core/viewer_model.h"
 #include "tests/view/exr_compare.h"
+#include "tests/support/scene_usda.h"
 
 #include <gtest/gtest.h>
 
@@ -51,49 +52,13 @@ Coverage coverageOf(const ReadImage& image) {
 // Two 5 mm spheres 40 mm apart (/Left at x = -20, /Right at +20), a light, and a camera
 // 150 mm away on +Z whose x runs from -10 at time code 0 to +10 at 48 (or stays at 0).
 std::string twoSpheres(bool animated) {
-    const std::string cameraX = animated ? "    double3 xformOp:translate.timeSamples = {\n"
-                                           "        0: (-10, 0, 150),\n        48: (10, 0, 150),\n    }\n"
-                                         : "    double3 xformOp:translate = (0, 0, 150)\n";
-    return R"(#usda 1.0
-(
-    metersPerUnit = 0.001
-    timeCodesPerSecond = 24
-    startTimeCode = 0
-    endTimeCode = 48
-)
-
-def "Left" (
-    references = @./sphere.usda@
-)
-{
-    double3 xformOp:translate = (-20, 0, 0)
-    uniform token[] xformOpOrder = ["xformOp:translate"]
-}
-
-def "Right" (
-    references = @./sphere.usda@
-)
-{
-    double3 xformOp:translate = (20, 0, 0)
-    uniform token[] xformOpOrder = ["xformOp:translate"]
-}
-
-def SphereLight "Key"
-{
-    float inputs:intensity = 2000
-    bool treatAsPoint = 1
-    double3 xformOp:translate = (0, 30, 60)
-    uniform token[] xformOpOrder = ["xformOp:translate"]
-}
-
-def Camera "Shot"
-{
-    float focalLength = 50
-    float horizontalAperture = 36
-    float verticalAperture = 24
-)" + cameraX + R"(    uniform token[] xformOpOrder = ["xformOp:translate"]
-}
-)";
+    using namespace test::usda;
+    const std::string shot =
+        animated ? translateSamples({{0, {-10, 0, 150}}, {48, {10, 0, 150}}}) : translate({0, 0, 150});
+    return header("    timeCodesPerSecond = 24\n    startTimeCode = 0\n    endTimeCode = 48\n") +
+           reference("Left", "./sphere.usda", translate({-20, 0, 0})) +
+           reference("Right", "./sphere.usda", translate({20, 0, 0})) +
+           pointLight("Key", "2000", translate({0, 30, 60})) + camera("Shot", shot);
 }
 
 ViewRun runScript(const SceneDir& dir, const std::string& script) {

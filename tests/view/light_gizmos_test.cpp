@@ -6,6 +6,7 @@
 #include "examples/opal-view/core/light_drag.h"
 #include "examples/opal-view/core/light_gizmos.h"
 #include "examples/opal-view/core/pointer_gestures.h"
+#include "tests/support/scene_usda.h"
 #include "tests/view/view_process.h"
 
 #include <gtest/gtest.h>
@@ -149,42 +150,11 @@ namespace {
 
 // The 5 mm sphere at the origin, seen from (0, 0, 30) down -Z, two point lights 10 mm in
 // front of the camera: /A (selected: the first) 1 mm up and right, /B 1 mm down and left.
-constexpr const char* GizmoScene = R"(#usda 1.0
-(
-    metersPerUnit = 0.001
-)
-
-def "Sphere" (
-    references = @./sphere.usda@
-)
-{
+std::string gizmoScene() {
+    using namespace usda;
+    return header() + reference("Sphere", "./sphere.usda") + pointLight("A", "300", translate({1, 1, 20})) +
+           pointLight("B", "300", translate({-1, -1, 20})) + camera("Camera", translate({0, 0, 30}));
 }
-
-def SphereLight "A"
-{
-    float inputs:intensity = 300
-    bool treatAsPoint = 1
-    double3 xformOp:translate = (1, 1, 20)
-    uniform token[] xformOpOrder = ["xformOp:translate"]
-}
-
-def SphereLight "B"
-{
-    float inputs:intensity = 300
-    bool treatAsPoint = 1
-    double3 xformOp:translate = (-1, -1, 20)
-    uniform token[] xformOpOrder = ["xformOp:translate"]
-}
-
-def Camera "Camera"
-{
-    float focalLength = 50
-    float horizontalAperture = 36
-    float verticalAperture = 24
-    double3 xformOp:translate = (0, 0, 30)
-    uniform token[] xformOpOrder = ["xformOp:translate"]
-}
-)";
 
 // Whether the 3 x 3 pixels around (x, y) of an 8-bit screenshot all have `color`.
 bool showsGizmoColor(const ReadImage& shot, int x, int y, const std::array<std::uint8_t, 3>& color) {
@@ -198,7 +168,7 @@ bool showsGizmoColor(const ReadImage& shot, int x, int y, const std::array<std::
 TEST(LightGizmos, TheScreenshotShowsAMarkerWhereEachLightProjectsUnlessTheyAreOff) {
     const SceneDir dir;
     dir.writeSphereAsset("sphere");
-    dir.write("scene.usda", GizmoScene);
+    dir.write("scene.usda", gizmoScene());
     dir.write("gizmos.script", "wait\nscreenshot " + scriptWord(dir / "on.png") + "\ngizmos off\nwait\nscreenshot " +
                                    scriptWord(dir / "off.png") + "\ngizmos on\nwait\nscreenshot " +
                                    scriptWord(dir / "again.png") + "\nquit\n");

@@ -5,6 +5,7 @@
 // startTimeCode..endTimeCode; time is not an edit.
 #include "delegate/render_delegate.h"
 #include "examples/opal-view/core/viewer_model.h"
+#include "tests/support/scene_usda.h"
 #include "tests/view/exr_compare.h"
 
 #include <gtest/gtest.h>
@@ -17,39 +18,10 @@ namespace {
 // The 5 mm sphere, a camera 30 mm away and a point light: still at (0, 5, 20), or moved
 // by time samples from (-30, 5, 20) at time code 0 to (30, 5, 20) at 48 (24 per second).
 std::string timeScene(bool animated) {
-    const std::string light = animated ? "    double3 xformOp:translate.timeSamples = {\n"
-                                         "        0: (-30, 5, 20),\n        48: (30, 5, 20),\n    }\n"
-                                       : "    double3 xformOp:translate = (0, 5, 20)\n";
-    return R"(#usda 1.0
-(
-    metersPerUnit = 0.001
-    timeCodesPerSecond = 24
-    startTimeCode = 0
-    endTimeCode = 48
-)
-
-def "Sphere" (
-    references = @./sphere.usda@
-)
-{
-}
-
-def SphereLight "Key"
-{
-    float inputs:intensity = 2000
-    bool treatAsPoint = 1
-)" + light + R"(    uniform token[] xformOpOrder = ["xformOp:translate"]
-}
-
-def Camera "Camera"
-{
-    float focalLength = 50
-    float horizontalAperture = 36
-    float verticalAperture = 24
-    double3 xformOp:translate = (0, 0, 30)
-    uniform token[] xformOpOrder = ["xformOp:translate"]
-}
-)";
+    using namespace usda;
+    const std::string key = animated ? translateSamples({{0, {-30, 5, 20}}, {48, {30, 5, 20}}}) : translate({0, 5, 20});
+    return header("    timeCodesPerSecond = 24\n    startTimeCode = 0\n    endTimeCode = 48\n") +
+           reference("Sphere", "./sphere.usda") + pointLight("Key", "2000", key) + camera("Camera", translate({0, 0, 30}));
 }
 
 void expectLightAt(const view::ViewerModel& model, double x, const std::string& when) {

@@ -5,6 +5,7 @@
 // blue leaves it greener; a light moved from left to right moves the bright side with it.
 // A bad script fails with its line.
 #include "tests/view/exr_compare.h"
+#include "tests/support/scene_usda.h"
 
 #include <cmath>
 #include <iostream>
@@ -14,36 +15,11 @@ namespace {
 
 // The 5 mm sphere placed at x = 40, a light, and a camera 30 mm in front of it and 3 mm to
 // its left (looking down -Z), so the sphere lies right of the picture's centre.
-constexpr const char* OffsetScene = R"(#usda 1.0
-(
-    metersPerUnit = 0.001
-)
-
-def "Sphere" (
-    references = @./sphere.usda@
-)
-{
-    double3 xformOp:translate = (40, 0, 0)
-    uniform token[] xformOpOrder = ["xformOp:translate"]
+std::string offsetScene() {
+    using namespace usda;
+    return header() + reference("Sphere", "./sphere.usda", translate({40, 0, 0})) +
+           pointLight("Bulb", "2000", translate({40, 5, 20})) + camera("Camera", translate({37, 0, 30}));
 }
-
-def SphereLight "Bulb"
-{
-    float inputs:intensity = 2000
-    bool treatAsPoint = 1
-    double3 xformOp:translate = (40, 5, 20)
-    uniform token[] xformOpOrder = ["xformOp:translate"]
-}
-
-def Camera "Camera"
-{
-    float focalLength = 50
-    float horizontalAperture = 36
-    float verticalAperture = 24
-    double3 xformOp:translate = (37, 0, 30)
-    uniform token[] xformOpOrder = ["xformOp:translate"]
-}
-)";
 
 // The mean of a square of pixels' brightest channel.
 double blockLevel(const ReadImage& image, int cx, int cy, int half) {
@@ -74,7 +50,7 @@ double meanGreenness(const ReadImage& exr) {
 TEST(Viewer, TheScreenshotShowsTheAssetWhereTheSceneCameraLooks) {
     const SceneDir dir;
     dir.writeSphereAsset("sphere");
-    dir.write("scene.usda", OffsetScene);
+    dir.write("scene.usda", offsetScene());
     const ViewRun run = runOpalView(dir, "'" + (dir / "scene.usda").string() + "' --size 960x540 --screenshot '" +
                                              (dir / "shot.png").string() + "'");
     ASSERT_EQ(run.exitCode, 0) << run.err;
@@ -129,14 +105,14 @@ TEST(Viewer, ShowsThePictureThroughTheScenesOcioConfig) {
     std::string config = slurpFile(std::filesystem::path(OPAL_SOURCE_DIR) / "delegate/output/ocio/config.ocio");
     for (std::size_t at; (at = config.find("sRGB - Display")) != std::string::npos;) config.replace(at, 14, "Test sRGB");
     dir.write("renamed.ocio", config);
-    const std::string scene = std::string(OffsetScene) + R"(
+    const std::string scene = offsetScene() + R"(
 def RenderSettings "Settings"
 {
     asset opal:ocioConfig = @./renamed.ocio@
 }
 )";
     dir.write("with-config.usda", scene);
-    dir.write("without-config.usda", OffsetScene);
+    dir.write("without-config.usda", offsetScene());
     const std::filesystem::path script = dir.write("view.script", "view \"Test sRGB\" \"ACES 1.0 - SDR Video\"\nquit\n");
     const ViewRun with = runOpalView(dir, "'" + (dir / "with-config.usda").string() + "' --script '" + script.string() + "'");
     EXPECT_EQ(with.exitCode, 0) << with.err;
