@@ -190,11 +190,7 @@ void TranslucentMesh::updateRadiance(bool reference, int primId, CommitStats& st
         stats.deepestIrradiance = std::min(stats.deepestIrradiance, engine_->irradianceNoise().deepest);
         shading->vertexRadiance = engine_->sharedVertexRadiance();
         shading->eta = engine_->material().eta;
-        const IrradianceKey irradianceKey{false, momentsVersion_, shading->eta};
-        if (!vertexIrradiance_ || irradianceKey != irradianceKey_) {
-            vertexIrradiance_ = std::make_shared<const std::vector<float>>(engine_->vertexIrradiance());
-            irradianceKey_ = irradianceKey;
-        }
+        vertexIrradiance_ = engine_->sharedVertexIrradiance();  // gathered again only after E changed
         stats.materialMs += clock.ms();
     } else {
         // Ground truth: the same lights' true E (F_t(eta, .) per light, not its moment fit;
@@ -211,7 +207,6 @@ void TranslucentMesh::updateRadiance(bool reference, int primId, CommitStats& st
         }
         shading->vertexRadiance = std::make_shared<const std::vector<float>>(engine_->toVertices(gathered));
         vertexIrradiance_ = std::make_shared<const std::vector<float>>(engine_->toVertices(exact));
-        irradianceKey_ = {true, momentsVersion_, m.eta};
         shading->eta = m.eta;
         ++stats.referenceGathers;
         stats.referenceMs += clock.ms();
@@ -238,7 +233,7 @@ void TranslucentMesh::markCommitted() { topologyChanged_ = transformChanged_ = v
 std::size_t TranslucentMesh::memoryBytes() const {
     std::size_t bytes = engine_ ? engine_->memoryBytes() : 0;
     if (irradiance_) bytes += irradiance_->memoryBytes();
-    if (vertexIrradiance_) bytes += vertexIrradiance_->capacity() * sizeof(float);
+    if (vertexIrradiance_ && output_.reference) bytes += vertexIrradiance_->capacity() * sizeof(float);  // else the engine's
     return bytes;
 }
 

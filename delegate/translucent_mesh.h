@@ -110,15 +110,8 @@ private:
     };
     OutputKey output_;
     std::shared_ptr<const MeshShading> shading_;
-    // E per vertex and what it was formed from (moments version, eta, reference or not).
+    // E per vertex: the engine's (held, recycled_buffer.h) or the reference's.
     std::shared_ptr<const std::vector<float>> vertexIrradiance_;
-    struct IrradianceKey {
-        bool reference = false;
-        std::uint64_t moments = 0;
-        double eta = 0.0;
-        bool operator==(const IrradianceKey&) const = default;
-    };
-    IrradianceKey irradianceKey_;
 };
 
 }  // namespace opal

@@ -190,21 +190,28 @@ void RelightEngine::formRadiance(bool reweigh) {
     if (reweigh) {
         irradiance_ = moments_.combine(fresnel_);
         irradianceNoise_ = zeroNegatives(irradiance_);
+        ++irradianceVersion_;
     }
     radianceNoise_ = addSelfTermAndProject();
-    if (vertexRadiance_.use_count() > 1) {
-        std::shared_ptr<std::vector<float>> next = spareVertexRadiance_ && spareVertexRadiance_.use_count() == 1
-                                                       ? std::move(spareVertexRadiance_)
-                                                       : std::make_shared<std::vector<float>>();
-        spareVertexRadiance_ = std::exchange(vertexRadiance_, std::move(next));
+    gatherInto(radiance_, vertexRadiance_.next());
+}
+
+void RelightEngine::gatherInto(std::span<const float> perSample, std::vector<float>& out) {
+    out.resize(gather_.vertices() * 3);
+    if (!out.empty()) gather_.apply(perSample, out, padded_);
+}
+
+std::shared_ptr<const std::vector<float>> RelightEngine::sharedVertexIrradiance() {
+    if (vertexIrradianceVersion_ != irradianceVersion_) {
+        gatherInto(irradiance_, vertexIrradiance_.next());
+        vertexIrradianceVersion_ = irradianceVersion_;
     }
-    vertexRadiance_->resize(gather_.vertices() * 3);
-    if (!vertexRadiance_->empty()) gather_.apply(radiance_, *vertexRadiance_, padded_);
+    return vertexIrradiance_.shared();
 }
 
 std::vector<float> RelightEngine::toVertices(std::span<const float> perSample) {
-    std::vector<float> out(gather_.vertices() * 3);
-    if (!out.empty()) gather_.apply(perSample, out, padded_);
+    std::vector<float> out;
+    gatherInto(perSample, out);
     return out;
 }
 
@@ -249,7 +256,7 @@ std::size_t bytesOf(const std::vector<T>& v) {
 std::size_t RelightEngine::memoryBytes() const {
     return product_.memoryBytes() + bytesOf(moments_.values) + bytesOf(haar_) + bytesOf(input_) + bytesOf(products_) +
            bytesOf(weighted_) + bytesOf(fresnel_) + bytesOf(profile_) + bytesOf(self_) + bytesOf(radiance_) + bytesOf(irradiance_) +
-           bytesOf(*vertexRadiance_) + (spareVertexRadiance_ ? bytesOf(*spareVertexRadiance_) : 0) + bytesOf(padded_) +
+           vertexRadiance_.memoryBytes() + vertexIrradiance_.memoryBytes() + bytesOf(padded_) +
            gather_.memoryBytes();
 }
 

@@ -20,6 +20,7 @@
 
 #include "delegate/relight/float4.h"
 #include "delegate/relight/irradiance.h"
+#include "delegate/relight/recycled_buffer.h"
 #include "delegate/relight/transfer_product.h"
 #include "delegate/relight/vertex_gather.h"
 #include "schema/asset/translucent_asset.h"
@@ -50,15 +51,16 @@ public:
     const Material& material() const { return material_; }  // as clamped
 
     std::span<const float> sampleRadiance() const { return radiance_; }       // samples x 3
-    std::span<const float> vertexRadiance() const { return *vertexRadiance_; } // render-mesh vertices x 3
+    std::span<const float> vertexRadiance() const { return vertexRadiance_.current(); } // render-mesh vertices x 3
     // The same buffer, for frames to hold. Held buffers never change: the next edit writes
-    // into whichever of two buffers no one else holds (a host that keeps the last frame
-    // costs no allocation), else into a new one.
-    std::shared_ptr<const std::vector<float>> sharedVertexRadiance() const { return vertexRadiance_; }
+    // into a buffer no one else holds (recycled_buffer.h).
+    std::shared_ptr<const std::vector<float>> sharedVertexRadiance() const { return vertexRadiance_.shared(); }
     // E(x_i; eta) = sum_m c_m(eta) E_m(x_i): samples x 3.
     std::span<const float> sampleIrradiance() const { return irradiance_; }
-    // The same at the render-mesh vertices (vertices x 3), through the engine's gather.
-    std::vector<float> vertexIrradiance() { return toVertices(irradiance_); }
+    // The same at the render-mesh vertices (vertices x 3), through the engine's gather:
+    // gathered at the first call after E changed (a light or eta), in a buffer held
+    // frames never see change, as the radiance's.
+    std::shared_ptr<const std::vector<float>> sharedVertexIrradiance();
     // Any per-sample RGB values (samples x 3) at the render-mesh vertices, through the
     // engine's gather and its scratch.
     std::vector<float> toVertices(std::span<const float> perSample);
@@ -78,6 +80,7 @@ public:
 
 private:
     void formRadiance(bool reweigh);  // L = w1^-1 ((1/pi) sum_k s_k z_k), then the vertices
+    void gatherInto(std::span<const float> perSample, std::vector<float>& out);  // the vertices' values
     void weighProducts(bool reweigh, std::size_t begin, std::size_t end);
     NegativeNoise addSelfTermAndProject();  // + the self term, then max(0, L); throws unless finite
 
@@ -98,8 +101,9 @@ private:
     std::vector<float> self_;        // R_disk(rho_o; sigma) / pi: samples x 3 (empty: in the transfer)
     std::vector<float> radiance_, irradiance_;
     NegativeNoise radianceNoise_, irradianceNoise_;
-    std::shared_ptr<std::vector<float>> vertexRadiance_ = std::make_shared<std::vector<float>>();
-    std::shared_ptr<std::vector<float>> spareVertexRadiance_;
+    RecycledBuffer vertexRadiance_;
+    RecycledBuffer vertexIrradiance_;
+    std::uint64_t irradianceVersion_ = 0, vertexIrradianceVersion_ = ~std::uint64_t(0);  // E formed / gathered
     VertexGather gather_;            // the render-mesh vertices' weights, in cache-friendly order
     std::vector<Float4> padded_;     // gather_'s scratch
 };

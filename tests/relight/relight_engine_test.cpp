@@ -169,6 +169,37 @@ TEST(RelightEngine, HeldVertexRadianceNeverChangesAndFreeBuffersAreReused) {
     EXPECT_EQ(engine.sharedVertexRadiance().get(), current);
 }
 
+TEST(RelightEngine, VertexIrradianceIsGatheredOncePerIrradianceAndHeldBuffersNeverChange) {
+    const auto asset = slabAsset();
+    RelightEngine engine(asset);
+    engine.setIrradiance(test::randomMoments(std::uint32_t(asset->samples.size()), 2, 5));
+    std::shared_ptr<const std::vector<float>> first = engine.sharedVertexIrradiance();
+    EXPECT_EQ(*first, engine.toVertices(engine.sampleIrradiance()));
+    const std::vector<float> firstValues = *first;
+    // A material edit that keeps eta keeps E: the same buffer, not gathered again.
+    Material m = engine.material();
+    m.sigmaA[0] *= 1.5;
+    engine.setMaterial(m);
+    EXPECT_EQ(engine.sharedVertexIrradiance().get(), first.get());
+    // New light: new values in another buffer; the held one is as it was.
+    engine.setIrradiance(test::randomMoments(std::uint32_t(asset->samples.size()), 2, 6));
+    std::shared_ptr<const std::vector<float>> second = engine.sharedVertexIrradiance();
+    EXPECT_NE(second.get(), first.get());
+    EXPECT_EQ(*first, firstValues);
+    EXPECT_EQ(*second, engine.toVertices(engine.sampleIrradiance()));
+    EXPECT_NE(*second, firstValues);
+    // So does an eta edit (E depends on eta through the Fresnel moments).
+    m.eta += 0.05;
+    engine.setMaterial(m);
+    EXPECT_EQ(*engine.sharedVertexIrradiance(), engine.toVertices(engine.sampleIrradiance()));
+    EXPECT_NE(*engine.sharedVertexIrradiance(), *second);
+    // Nobody holding the old buffers: the engine writes into them again.
+    const std::vector<float>* held = engine.sharedVertexIrradiance().get();
+    first.reset(), second.reset();
+    engine.setIrradiance(test::randomMoments(std::uint32_t(asset->samples.size()), 2, 7));
+    EXPECT_EQ(engine.sharedVertexIrradiance().get(), held);
+}
+
 TEST(RelightEngine, ClampsMaterialsToTheEditableRange) {
     const auto asset = slabAsset();
     RelightEngine engine(asset);
