@@ -307,9 +307,7 @@ int runAccuracyBench(int argc, char** argv) {
         ->check(CLI::PositiveNumber)
         ->capture_default_str();
     app.add_option("--asset", options.assets, "already baked assets (ASSET.usda) to measure too (repeatable)");
-    app.add_option("--material", options.materials,
-                   "materials (repeatable): the asset's default, and the shortest and longest mean free path of "
-                   "its editable range")
+    app.add_option("--material", options.materials, kEndMaterialsHelp)
         ->check(CLI::IsMember(kEndMaterials))
         ->capture_default_str();
     app.add_option("--case", options.cases, "lighting cases (repeatable)")

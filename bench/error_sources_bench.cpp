@@ -20,12 +20,12 @@
 // accuracy` lights it. Three exact gathers per material: O(N^2) each (seconds at 16,384
 // samples, minutes at 65,536). Findings: docs/ARCHITECTURE.md#compression.
 #include "bench/accuracy_json.h"
+#include "bench/dome_map.h"
 #include "bench/image_accuracy.h"
 #include "bench/mean_free_path_ends.h"
 #include "bench/shared_assets.h"
 #include "bench/subcommand.h"
 
-#include "delegate/dome_texture.h"
 #include "delegate/relight/mesh_irradiance.h"
 #include "delegate/relight/reference_gather.h"
 #include "delegate/relight/relight_engine.h"
@@ -107,14 +107,11 @@ int run(const Options& options) {
     for (const std::string& w : warnings) std::printf("  warning: %s\n", w.c_str());
     if (asset->environment.offsets.empty())
         throw Error("asset '" + options.asset + "' has no environment transfer: nothing lights it as a dome");
-    if (std::error_code ec; !fs::is_regular_file(options.env, ec))
-        throw Error("environment map '" + options.env.string() + "' not found (pass --env, or set OPAL_SHARED_ASSETS)");
     hd::LightDesc desc;
     desc.kind = hd::LightKind::Dome;
     desc.textureFile = options.env.string();
-    DomeTextureCache textures;
-    const auto light = std::make_shared<const EnvironmentLight>(
-        EnvironmentLight::fromDesc(textures.get(desc.textureFile, desc.textureColorSpace), desc));
+    const auto light =
+        std::make_shared<const EnvironmentLight>(EnvironmentLight::fromDesc(readDomeMap(options.env), desc));
     MeshIrradiance dome(asset, Imath::M44d());
     dome.setLight(hd::SdfPath("/Dome"), light);
 
@@ -142,9 +139,7 @@ int runErrorSources(int argc, char** argv) {
     Options options;
     app.add_option("--asset", options.asset, "the baked asset (ASSET.usda)")->required();
     app.add_option("--env", options.env, "the dome's lat-long map (default: the studio map in $OPAL_SHARED_ASSETS)");
-    app.add_option("--material", options.materials,
-                   "materials (repeatable): the asset's default, and the shortest and longest mean free path of "
-                   "its editable range")
+    app.add_option("--material", options.materials, kEndMaterialsHelp)
         ->check(CLI::IsMember(kEndMaterials))
         ->capture_default_str();
     app.add_option("--json", options.jsonFile, "also write every figure as JSON to this file");

@@ -26,6 +26,8 @@ Material longestMeanFreePath(const EditableRange& range, double eta);
 // The materials the benches measure, by name: "default" (the asset's), "short" and "long"
 // (the ends above, at the default's eta).
 inline const std::vector<std::string> kEndMaterials = {"default", "short", "long"};
+inline constexpr const char* kEndMaterialsHelp =
+    "materials (repeatable): the asset's default, and the shortest and longest mean free path of its editable range";
 Material materialNamed(const std::string& name, const TranslucentAsset& asset);
 
 }  // namespace opal::bench

@@ -29,6 +29,7 @@
 #include "bench/cached_bake.h"
 #include "bench/compression_sweep.h"
 #include "bench/cpu_time.h"
+#include "bench/dome_map.h"
 #include "bench/error_time_plot.h"
 #include "bench/relight_reference.h"
 #include "bench/median.h"
@@ -39,7 +40,6 @@
 
 #include "delegate/output/color_config.h"
 #include "delegate/output/display_transform.h"
-#include "delegate/dome_texture.h"
 #include "delegate/hd/render_index.h"
 #include "delegate/output/image.h"
 #include "delegate/output/preview_writer.h"
@@ -686,11 +686,7 @@ std::shared_ptr<const LatLongMap> loadDome(const fs::path& env, const Translucen
         announce("the asset has no environment transfer: no dome, no environment case");
         return nullptr;
     }
-    if (std::error_code ec; !fs::is_regular_file(env, ec))
-        throw Error("environment map '" + env.string() + "' not found (pass --env, or set OPAL_SHARED_ASSETS)");
-    DomeTextureCache textures;
-    const hd::LightDesc defaults;
-    return textures.get(env.string(), defaults.textureColorSpace);
+    return readDomeMap(env);
 }
 
 // The default display and view of the delegate's OCIO config ($OCIO or Opal's own).
