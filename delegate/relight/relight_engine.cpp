@@ -190,7 +190,7 @@ void RelightEngine::formRadiance(bool reweigh) {
     if (reweigh) {
         irradiance_ = moments_.combine(fresnel_);
         irradianceNoise_ = zeroNegatives(irradiance_);
-        ++irradianceVersion_;
+        vertexIrradianceStale_ = true;
     }
     radianceNoise_ = addSelfTermAndProject();
     gatherInto(radiance_, vertexRadiance_.next());
@@ -202,9 +202,9 @@ void RelightEngine::gatherInto(std::span<const float> perSample, std::vector<flo
 }
 
 std::shared_ptr<const std::vector<float>> RelightEngine::sharedVertexIrradiance() {
-    if (vertexIrradianceVersion_ != irradianceVersion_) {
+    if (vertexIrradianceStale_) {
         gatherInto(irradiance_, vertexIrradiance_.next());
-        vertexIrradianceVersion_ = irradianceVersion_;
+        vertexIrradianceStale_ = false;
     }
     return vertexIrradiance_.shared();
 }

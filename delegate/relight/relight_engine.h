@@ -103,7 +103,7 @@ private:
     NegativeNoise radianceNoise_, irradianceNoise_;
     RecycledBuffer vertexRadiance_;
     RecycledBuffer vertexIrradiance_;
-    std::uint64_t irradianceVersion_ = 0, vertexIrradianceVersion_ = ~std::uint64_t(0);  // E formed / gathered
+    bool vertexIrradianceStale_ = true;  // E was formed again since vertexIrradiance_ was gathered
     VertexGather gather_;            // the render-mesh vertices' weights, in cache-friendly order
     std::vector<Float4> padded_;     // gather_'s scratch
 };
