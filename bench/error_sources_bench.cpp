@@ -7,7 +7,10 @@
 //                     MeshIrradiance::exactIrradiance) against the brute-force hemisphere
 //                     integral (MeshIrradiance::referenceIrradiance)
 //   transfer, dome    the engine's L against the exact gather of the engine's own E: the
-//                     compressed transfer alone, under the dome's light
+//                     compressed transfer alone, under the dome's light, and split by
+//                     step (bench/transfer_step_gathers.h): the profile basis alone
+//                     (lossless, against the exact gather), step 1 (against lossless) and
+//                     the rest, step 2 and the stored values (the engine against step 1)
 //   transfer, uniform the same with E = 1 at every sample: the transfer's error without
 //                     the light's contrast
 //   whole             the engine's L against the exact gather of the reference E: what
@@ -17,14 +20,16 @@
 // RMSE; per-sample luminance error over the samples whose reference is at least 1% of the
 // 99th percentile, median and 95th percentile, and over the darker half of them;
 // chromaticity). The dome is the map with the identity transform, as `opal-bench
-// accuracy` lights it. Three exact gathers per material: O(N^2) each (seconds at 16,384
-// samples, minutes at 65,536). Findings: docs/ARCHITECTURE.md#compression.
+// accuracy` lights it. Per material, three exact gathers, O(N^2) each, and two replays,
+// O(N^2 K) each (about 40 s in all at 16,384 samples on 2 cores, minutes at 65,536).
+// Findings: docs/ARCHITECTURE.md#compression.
 #include "bench/accuracy_json.h"
 #include "bench/dome_map.h"
 #include "bench/image_accuracy.h"
 #include "bench/mean_free_path_ends.h"
 #include "bench/shared_assets.h"
 #include "bench/subcommand.h"
+#include "bench/transfer_step_gathers.h"
 
 #include "delegate/relight/mesh_irradiance.h"
 #include "delegate/relight/reference_gather.h"
@@ -51,6 +56,7 @@ struct Options {
     std::string asset, jsonFile;
     fs::path env = studioDomeMap();
     std::vector<std::string> materials = kEndMaterials;
+    std::uint32_t keepMin = TransferSettings{}.minPerRow;
 };
 
 std::vector<float> copyOf(std::span<const float> values) { return {values.begin(), values.end()}; }
@@ -80,16 +86,22 @@ void printRow(const std::string& material, const char* source, const ImageAccura
 }
 
 Json measureMaterial(const std::shared_ptr<const TranslucentAsset>& asset, MeshIrradiance& dome,
-                     const std::string& name) {
+                     const std::string& name, const TransferSettings& step1) {
     const Material material = materialNamed(name, *asset);
     const std::vector<float> engineE = dome.exactIrradiance(material.eta);
     const std::vector<float> referenceE = dome.referenceIrradiance(material.eta);
     const auto [domeL, domeE] = relight(asset, material, dome.moments());
     const auto [uniformL, uniformE] = relight(asset, material, uniformMoments(dome.moments()));
+    const std::vector<float> exactL = referenceGather(*asset, material, domeE);
+    const std::vector<float> losslessL = losslessGather(*asset, material, domeE);
+    const std::vector<float> step1L = step1Gather(*asset, material, domeE, step1);
 
     const std::pair<const char*, ImageAccuracy> sources[] = {
         {"irradiance", measureAccuracy(engineE, referenceE)},
-        {"transfer_dome", measureAccuracy(domeL, referenceGather(*asset, material, domeE))},
+        {"transfer_dome", measureAccuracy(domeL, exactL)},
+        {"dome_basis", measureAccuracy(losslessL, exactL)},
+        {"dome_step1", measureAccuracy(step1L, losslessL)},
+        {"dome_step2_values", measureAccuracy(domeL, step1L)},
         {"transfer_uniform", measureAccuracy(uniformL, referenceGather(*asset, material, uniformE))},
         {"whole", measureAccuracy(domeL, referenceGather(*asset, material, referenceE))},
     };
@@ -115,16 +127,23 @@ int run(const Options& options) {
     MeshIrradiance dome(asset, Imath::M44d());
     dome.setLight(hd::SdfPath("/Dome"), light);
 
-    std::printf("opal-bench error-sources: %s, %zu samples, dome %s; per-sample figures (bench/image_accuracy.h)\n",
-                options.asset.c_str(), asset->samples.size(), options.env.c_str());
+    std::printf("opal-bench error-sources: %s, %zu samples, dome %s; per-sample figures (bench/image_accuracy.h); "
+                "step 1 replayed at keep %g, keep-min %u\n",
+                options.asset.c_str(), asset->samples.size(), options.env.c_str(), asset->transfer.keepFraction,
+                options.keepMin);
     std::printf("%-8s %-18s %9s %8s %8s %8s %8s\n", "material", "source", "rel.RMSE", "Y med", "Y p95", "dark p95",
                 "chr p95");
     Json results = Json::array();
-    for (const std::string& name : options.materials) results.push_back(measureMaterial(asset, dome, name));
+    TransferSettings step1;
+    step1.keepFraction = asset->transfer.keepFraction;
+    step1.minPerRow = options.keepMin;
+    for (const std::string& name : options.materials) results.push_back(measureMaterial(asset, dome, name, step1));
     if (!options.jsonFile.empty()) {
         const Json j = {{"asset", options.asset},
                         {"env", options.env.string()},
                         {"samples", asset->samples.size()},
+                        {"step1_keep", step1.keepFraction},
+                        {"step1_keep_min", step1.minPerRow},
                         {"results", results}};
         writeFileAtomically(options.jsonFile, j.dump(2) + "\n");
         std::printf("wrote %s\n", options.jsonFile.c_str());
@@ -141,6 +160,9 @@ int runErrorSources(int argc, char** argv) {
     app.add_option("--env", options.env, "the dome's lat-long map (default: the studio map in $OPAL_SHARED_ASSETS)");
     app.add_option("--material", options.materials, kEndMaterialsHelp)
         ->check(CLI::IsMember(kEndMaterials))
+        ->capture_default_str();
+    app.add_option("--keep-min", options.keepMin,
+                   "the floor of step 1 the asset was baked with (opal-bake --keep-min; the asset does not record it)")
         ->capture_default_str();
     app.add_option("--json", options.jsonFile, "also write every figure as JSON to this file");
     CLI11_PARSE(app, argc, argv);

@@ -17,6 +17,7 @@
 // bake gives exactly that sum is checked on smaller bakes.
 #include "bake/bake_pipeline.h"
 #include "bench/image_accuracy.h"
+#include "bench/transfer_step_gathers.h"
 #include "delegate/relight/mesh_irradiance.h"
 #include "raytrace/ray_scene.h"
 #include "delegate/relight/reference_gather.h"
@@ -141,42 +142,11 @@ MeshIrradiance irradianceOf(const std::shared_ptr<const TranslucentAsset>& asset
 
 // ---- truths -------------------------------------------------------------------------
 
-// The lossless transfer's radiance summed directly, L(x_o) = (1/pi) sum_k s_k (T_k E)(x_o)
-// (docs/ARCHITECTURE.md#transfer), with T_k[o][i] = b_k(|x_o - x_i|) A_i off the diagonal
-// (BasisLookup, the table the bake evaluates) with s_k fitted beyond the sample's own disk
-// (ProfileProjection), and the self term the engine adds, the dipole's exact disk reflectance
-// (docs/ARCHITECTURE.md#self-term). A bake with keep = energy = 1 stores exactly this matrix.
-std::vector<float> basisGather(const TranslucentAsset& asset, const Material& material, std::span<const float> e) {
-    const std::size_t n = asset.samples.size(), K = std::size_t(asset.basis.K());
-    const std::array<std::vector<double>, 3> s =
-        ProfileProjection(asset.basis, profileFitRadius(asset)).project(material);
-    const BasisLookup lookup(asset.basis);
-    const double toMm = 1.0 / asset.unitsPerMm;
-    std::vector<float> radiance(3 * n);
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 16), [&](const tbb::blocked_range<std::size_t>& range) {
-        std::vector<float> b(K);
-        for (std::size_t o = range.begin(); o != range.end(); ++o) {
-            const Imath::V3f xo = asset.samples[o].position;
-            double sum[3] = {0.0, 0.0, 0.0};
-            for (std::size_t i = 0; i < n; ++i) {
-                if (i == o) continue;
-                lookup.evaluate(float((asset.samples[i].position - xo).length() * toMm), b.data());
-                const double area = asset.samples[i].area * toMm * toMm;
-                for (int c = 0; c < 3; ++c) {
-                    double profile = 0.0;
-                    for (std::size_t k = 0; k < K; ++k) profile += s[c][k] * b[k];
-                    sum[c] += profile * area * e[3 * i + c];
-                }
-            }
-            const double radius = std::sqrt(asset.samples[o].area / std::numbers::pi) * toMm;
-            for (int c = 0; c < 3; ++c) {
-                const double disk = dipoleDiskReflectance(radius, material.channel(c));
-                radiance[3 * o + c] = float((sum[c] + disk * e[3 * o + c]) / std::numbers::pi);
-            }
-        }
-    });
-    return radiance;
-}
+// The lossless transfer's radiance summed directly (bench/transfer_step_gathers.h): every
+// pair of samples through the basis table the bake evaluates, s_k fitted beyond the
+// sample's own disk, and the self term the engine adds. A bake with keep = energy = 1
+// stores exactly this matrix.
+using bench::losslessGather;
 
 // sqrt(sum (a - b)^2 / sum b^2) over every sample and channel.
 double relativeRmse(std::span<const float> a, std::span<const float> b) {
@@ -227,7 +197,7 @@ Measured measure(const std::shared_ptr<const TranslucentAsset>& asset, LightCase
     const std::vector<float> referenceAtEngineE =
         light == LightCase::Dome ? referenceGather(*asset, m, engineE) : reference;
     return {bench::measureAccuracy(engine.sampleRadiance(), reference),
-            relativeRmse(basisGather(*asset, m, engineE), referenceAtEngineE), engine.radianceNoise(),
+            relativeRmse(losslessGather(*asset, m, engineE), referenceAtEngineE), engine.radianceNoise(),
             highestZeroedTruth(engine.sampleRadiance(), reference), highestZeroedTruth(engineE, referenceE),
             std::size_t(std::count_if(engineE.begin(), engineE.end(), [](float e) { return e < 0.0f; }))};
 }
@@ -276,7 +246,7 @@ TEST(BakedRelighting, ConcaveCandleAtTheDefaults) { expectAccuracyAtTheDefaults(
 
 // The engine on a lossless bake (keep 1, energy 1) is the direct sum above up to the
 // binary16 rounding of its working transfer (delegate/relight/transfer_product.h: 2^-11 per entry,
-// measured 5e-4 to 8e-4 relative RMSE after the Haar domain's cancellations), so the
+// measured 3.0e-4 to 4.4e-4 relative RMSE after the Haar domain's cancellations), so the
 // "basis alone" numbers are the lossless bake's. 512 samples (2 charts
 // of 16 x 16) keep the dense bake cheap.
 TEST(BakedRelighting, LosslessBakeLeavesOnlyTheBasisError) {
@@ -286,7 +256,7 @@ TEST(BakedRelighting, LosslessBakeLeavesOnlyTheBasisError) {
             RelightEngine engine(asset);
             engine.setIrradiance(irradianceOf(asset, light).moments());
             const std::span<const float> e = engine.sampleIrradiance();
-            const double vsSum = relativeRmse(engine.sampleRadiance(), basisGather(*asset, engine.material(), e));
+            const double vsSum = relativeRmse(engine.sampleRadiance(), losslessGather(*asset, engine.material(), e));
             const double vsReference =
                 relativeRmse(engine.sampleRadiance(), referenceGather(*asset, engine.material(), e));
             std::printf("[ lossless ] %s %s (512 samples): vs the direct sum %.1e, vs the reference %.3f%%\n",

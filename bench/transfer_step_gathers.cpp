@@ -1,0 +1,130 @@
+#include "bench/transfer_step_gathers.h"
+
+#include "bake/transfer_row.h"
+#include "bake/transfer_stages.h"
+#include "schema/asset/self_term.h"
+#include "schema/error.h"
+#include "schema/scatter/profile_projection.h"
+#include "schema/wavelet/haar.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+#include <array>
+#include <numbers>
+#include <string>
+
+namespace opal::bench {
+
+namespace {
+
+constexpr std::size_t kRowBlock = 1024;  // step 1's rows held at once
+
+struct Weights {
+    std::array<std::vector<double>, 3> s;  // s_k / pi per channel
+    std::vector<float> self;               // R_disk / pi, samples x 3
+};
+
+// The engine's weights, after checking the inputs.
+Weights engineWeights(const TranslucentAsset& asset, const Material& material, std::span<const float> irradiance) {
+    const std::size_t n = asset.samples.size();
+    if (irradiance.size() != 3 * n)
+        throw Error("step gathers: " + std::to_string(irradiance.size()) + " irradiance values for " +
+                    std::to_string(n) + " RGB samples");
+    if (asset.transfer.selfTerm != SelfTerm::AtRunTime)
+        throw Error("step gathers: the asset's self term is in its transfer (a sidecar before 2.3); rebake it");
+    const Material clamped = asset.range.clamp(material, nullptr);
+    Weights w;
+    w.s = ProfileProjection(asset.basis, profileFitRadius(asset)).project(clamped);
+    for (auto& channel : w.s)
+        for (double& s : channel) s /= std::numbers::pi;
+    w.self.resize(3 * asset.samples.size());
+    selfTermReflectance(asset.samples, asset.unitsPerMm, clamped, w.self);
+    for (float& r : w.self) r = float(r / std::numbers::pi);
+    return w;
+}
+
+// L_o = sum_k (s_k / pi) y_k + (R_disk / pi) E_o per channel, y: K x 3 for output o.
+void formRadiance(const Weights& w, std::span<const double> y, std::span<const float> e, std::size_t o,
+                  std::span<float> out) {
+    const std::size_t K = w.s[0].size();
+    for (int c = 0; c < 3; ++c) {
+        double sum = 0.0;
+        for (std::size_t k = 0; k < K; ++k) sum += w.s[c][k] * y[3 * k + c];
+        out[3 * o + c] = float(sum + double(w.self[3 * o + c]) * e[3 * o + c]);
+    }
+}
+
+std::vector<float> losslessRows(const TransferSamples& mm, const BasisLookup& lookup, const Weights& w,
+                                std::span<const float> e) {
+    const std::size_t n = mm.size(), K = std::size_t(lookup.K());
+    std::vector<float> out(3 * n);
+    tbb::enumerable_thread_specific<std::vector<float>> rows([&] { return std::vector<float>(K * n); });
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 16), [&](const tbb::blocked_range<std::size_t>& r) {
+        std::vector<float>& t = rows.local();
+        std::vector<double> y(3 * K);
+        for (std::size_t o = r.begin(); o != r.end(); ++o) {
+            transferRow(o, mm, lookup, t);
+            std::fill(y.begin(), y.end(), 0.0);
+            for (std::size_t k = 0; k < K; ++k)
+                for (std::size_t i = 0; i < n; ++i) {
+                    if (i == o) continue;  // the self term, added at run time
+                    for (int c = 0; c < 3; ++c) y[3 * k + c] += double(t[k * n + i]) * e[3 * i + c];
+                }
+            formRadiance(w, y, e, o, out);
+        }
+    });
+    return out;
+}
+
+// E's Haar coefficients per chart, channel-interleaved as E.
+std::vector<float> haarOfIrradiance(const ChartLayout& layout, std::span<const float> e) {
+    std::vector<float> we(e.begin(), e.end());
+    haarForwardCharts(std::span<float>(we), layout, 3);
+    return we;
+}
+
+std::vector<float> step1Rows(const TranslucentAsset& asset, const TransferSamples& mm, const BasisLookup& lookup,
+                             const TransferSettings& settings, const Weights& w, std::span<const float> e) {
+    const std::size_t n = mm.size(), K = std::size_t(lookup.K());
+    const TransferPlan plan = planTransfer(n, asset.layout, asset.basis, settings);
+    const std::vector<float> we = haarOfIrradiance(asset.layout, e);
+    std::vector<float> out(3 * n);
+    for (std::size_t begin = 0; begin < n; begin += kRowBlock) {
+        const std::size_t end = std::min(n, begin + kRowBlock);
+        const std::vector<Step1Rows> rows = compressRows(plan, mm, lookup, begin, end, nullptr, CancelToken());
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(begin, end, 16), [&](const tbb::blocked_range<std::size_t>& r) {
+            std::vector<double> y(3 * K);
+            for (std::size_t o = r.begin(); o != r.end(); ++o) {
+                std::fill(y.begin(), y.end(), 0.0);
+                for (std::size_t k = 0; k < K; ++k) {
+                    const Step1Rows& kept = rows[k];
+                    const std::size_t at = (o - begin) * kept.perRow;
+                    for (std::size_t q = at; q < at + kept.perRow; ++q)
+                        for (int c = 0; c < 3; ++c)
+                            y[3 * k + c] += double(kept.value[q]) * we[3 * std::size_t(kept.column[q]) + c];
+                }
+                formRadiance(w, y, e, o, out);
+            }
+        });
+    }
+    return out;
+}
+
+}  // namespace
+
+std::vector<float> losslessGather(const TranslucentAsset& asset, const Material& material,
+                                  std::span<const float> irradiance) {
+    const Weights w = engineWeights(asset, material, irradiance);
+    return losslessRows(toTransferSamples(asset.samples, asset.unitsPerMm), BasisLookup(asset.basis), w, irradiance);
+}
+
+std::vector<float> step1Gather(const TranslucentAsset& asset, const Material& material,
+                               std::span<const float> irradiance, const TransferSettings& settings) {
+    const Weights w = engineWeights(asset, material, irradiance);
+    return step1Rows(asset, toTransferSamples(asset.samples, asset.unitsPerMm), BasisLookup(asset.basis), settings, w,
+                     irradiance);
+}
+
+}  // namespace opal::bench
