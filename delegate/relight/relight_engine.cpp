@@ -190,28 +190,27 @@ void RelightEngine::formRadiance(bool reweigh) {
     if (reweigh) {
         irradiance_ = moments_.combine(fresnel_);
         irradianceNoise_ = zeroNegatives(irradiance_);
-        vertexIrradianceStale_ = true;
     }
     radianceNoise_ = addSelfTermAndProject();
-    gatherInto(radiance_, vertexRadiance_.next());
+    gatherVertices(reweigh);
 }
 
-void RelightEngine::gatherInto(std::span<const float> perSample, std::vector<float>& out) {
-    out.resize(gather_.vertices() * 3);
-    if (!out.empty()) gather_.apply(perSample, out, padded_);
-}
-
-std::shared_ptr<const std::vector<float>> RelightEngine::sharedVertexIrradiance() {
-    if (vertexIrradianceStale_) {
-        gatherInto(irradiance_, vertexIrradiance_.next());
-        vertexIrradianceStale_ = false;
+// The vertices' L, and their E when it was formed again: both in one pass over the weights.
+void RelightEngine::gatherVertices(bool withIrradiance) {
+    std::vector<float>& radiance = vertexRadiance_.next();
+    radiance.resize(gather_.vertices() * 3);
+    if (!withIrradiance) {
+        if (!radiance.empty()) gather_.apply(radiance_, radiance, padded_);
+        return;
     }
-    return vertexIrradiance_.shared();
+    std::vector<float>& irradiance = vertexIrradiance_.next();
+    irradiance.resize(gather_.vertices() * 3);
+    if (!radiance.empty()) gather_.apply(radiance_, irradiance_, radiance, irradiance, padded_);
 }
 
 std::vector<float> RelightEngine::toVertices(std::span<const float> perSample) {
-    std::vector<float> out;
-    gatherInto(perSample, out);
+    std::vector<float> out(gather_.vertices() * 3);
+    if (!out.empty()) gather_.apply(perSample, out, padded_);
     return out;
 }
 

@@ -58,9 +58,9 @@ public:
     // E(x_i; eta) = sum_m c_m(eta) E_m(x_i): samples x 3.
     std::span<const float> sampleIrradiance() const { return irradiance_; }
     // The same at the render-mesh vertices (vertices x 3), through the engine's gather:
-    // gathered at the first call after E changed (a light or eta), in a buffer held
+    // gathered with the radiance whenever E changes (a light or eta), in a buffer held
     // frames never see change, as the radiance's.
-    std::shared_ptr<const std::vector<float>> sharedVertexIrradiance();
+    std::shared_ptr<const std::vector<float>> sharedVertexIrradiance() const { return vertexIrradiance_.shared(); }
     // Any per-sample RGB values (samples x 3) at the render-mesh vertices, through the
     // engine's gather and its scratch.
     std::vector<float> toVertices(std::span<const float> perSample);
@@ -80,7 +80,7 @@ public:
 
 private:
     void formRadiance(bool reweigh);  // L = w1^-1 ((1/pi) sum_k s_k z_k), then the vertices
-    void gatherInto(std::span<const float> perSample, std::vector<float>& out);  // the vertices' values
+    void gatherVertices(bool withIrradiance);  // the vertices' L, and E when it changed
     void weighProducts(bool reweigh, std::size_t begin, std::size_t end);
     NegativeNoise addSelfTermAndProject();  // + the self term, then max(0, L); throws unless finite
 
@@ -103,7 +103,6 @@ private:
     NegativeNoise radianceNoise_, irradianceNoise_;
     RecycledBuffer vertexRadiance_;
     RecycledBuffer vertexIrradiance_;
-    bool vertexIrradianceStale_ = true;  // E was formed again since vertexIrradiance_ was gathered
     VertexGather gather_;            // the render-mesh vertices' weights, in cache-friendly order
     std::vector<Float4> padded_;     // gather_'s scratch
 };

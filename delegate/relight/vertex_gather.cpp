@@ -63,36 +63,60 @@ VertexGather::VertexGather(const VertexWeights& weights, std::size_t samples) : 
     }
 }
 
-void VertexGather::apply(std::span<const float> perSample, std::span<float> out, std::vector<Float4>& scratch) const {
+void VertexGather::checkSizes(std::span<const float> perSample, std::span<const float> out) const {
     if (perSample.size() != samples_ * 3 || out.size() != vertex_.size() * 3)
         throw Error("vertex gather: " + std::to_string(perSample.size()) + " sample values and " +
                     std::to_string(out.size()) + " vertex values for " + std::to_string(samples_) + " samples and " +
                     std::to_string(vertex_.size()) + " vertices (RGB each)");
-    // The samples' RGB padded to four lanes: one aligned load per weight.
-    scratch.resize(samples_);
+}
+
+template <int S>
+void VertexGather::gather(const std::span<const float> (&perSample)[S], const std::span<float> (&out)[S],
+                          std::vector<Float4>& scratch) const {
+    for (int s = 0; s < S; ++s) checkSizes(perSample[s], out[s]);
+    // The samples' RGB padded to four lanes, the S signals of a sample side by side: one
+    // aligned load per weight and signal, from one cache line.
+    scratch.resize(samples_ * S);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, samples_, 8192), [&](const tbb::blocked_range<std::size_t>& r) {
         for (std::size_t i = r.begin(); i != r.end(); ++i)
-            scratch[i] = Float4{perSample[3 * i], perSample[3 * i + 1], perSample[3 * i + 2], 0.0f};
+            for (int s = 0; s < S; ++s) {
+                const float* p = perSample[s].data() + 3 * i;
+                scratch[S * i + s] = Float4{p[0], p[1], p[2], 0.0f};
+            }
     });
     const Float4* padded = scratch.data();
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, vertex_.size(), 4096), [&](const tbb::blocked_range<std::size_t>& r) {
         for (std::size_t i = r.begin(); i != r.end(); ++i) {
-            // Two sums: each add waits for the one before it, and a vertex has about 8 weights.
-            Float4 even = {}, odd = {};
+            // Two sums per signal: each add waits for the one before it, and a vertex has
+            // about 8 weights.
+            Float4 even[S] = {}, odd[S] = {};
             std::uint32_t e = offsets_[i];
             const std::uint32_t stop = offsets_[i + 1];
-            for (; e + 2 <= stop; e += 2) {
-                even += weight_[e] * padded[sample_[e]];
-                odd += weight_[e + 1] * padded[sample_[e + 1]];
+            for (; e + 2 <= stop; e += 2)
+                for (int s = 0; s < S; ++s) {
+                    even[s] += weight_[e] * padded[S * sample_[e] + s];
+                    odd[s] += weight_[e + 1] * padded[S * sample_[e + 1] + s];
+                }
+            if (e < stop)
+                for (int s = 0; s < S; ++s) even[s] += weight_[e] * padded[S * sample_[e] + s];
+            for (int s = 0; s < S; ++s) {
+                const Float4 sum = even[s] + odd[s];
+                float* to = out[s].data() + 3 * std::size_t(vertex_[i]);
+                to[0] = sum[0];
+                to[1] = sum[1];
+                to[2] = sum[2];
             }
-            if (e < stop) even += weight_[e] * padded[sample_[e]];
-            const Float4 sum = even + odd;
-            float* to = out.data() + 3 * std::size_t(vertex_[i]);
-            to[0] = sum[0];
-            to[1] = sum[1];
-            to[2] = sum[2];
         }
     });
+}
+
+void VertexGather::apply(std::span<const float> perSample, std::span<float> out, std::vector<Float4>& scratch) const {
+    gather<1>({perSample}, {out}, scratch);
+}
+
+void VertexGather::apply(std::span<const float> perSampleA, std::span<const float> perSampleB, std::span<float> outA,
+                         std::span<float> outB, std::vector<Float4>& scratch) const {
+    gather<2>({perSampleA, perSampleB}, {outA, outB}, scratch);
 }
 
 std::size_t VertexGather::memoryBytes() const {

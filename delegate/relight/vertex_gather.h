@@ -34,9 +34,21 @@ public:
     // caller gathering on every edit allocates nothing.
     void apply(std::span<const float> perSample, std::span<float> out, std::vector<Float4>& scratch) const;
 
+    // The same for two per-sample signals at once (the radiance and the irradiance, after a
+    // light or eta edit): one pass over the weights serves both, which halves the bytes the
+    // second gather would read (the weights and sample indices outweigh the samples).
+    void apply(std::span<const float> perSampleA, std::span<const float> perSampleB, std::span<float> outA,
+               std::span<float> outB, std::vector<Float4>& scratch) const;
+
     std::size_t memoryBytes() const;
 
 private:
+    void checkSizes(std::span<const float> perSample, std::span<const float> out) const;
+    // out[s][3 v + c] = sum_i w_vi perSample[s][3 i + c] for the S signals.
+    template <int S>
+    void gather(const std::span<const float> (&perSample)[S], const std::span<float> (&out)[S],
+                std::vector<Float4>& scratch) const;
+
     std::size_t samples_ = 0;
     std::vector<std::uint32_t> vertex_;   // visiting order: vertex_[i] is the i-th vertex visited
     std::vector<std::uint32_t> offsets_;  // visits + 1, into sample_ and weight_

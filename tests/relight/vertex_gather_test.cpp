@@ -1,5 +1,5 @@
 // VertexGather: the render-mesh vertices' radiance, visited in cache order, against the sum
-// written plainly in the vertices' own order.
+// written plainly in the vertices' own order; two signals in one pass against two passes.
 #include "delegate/relight/vertex_gather.h"
 #include "schema/error.h"
 
@@ -43,6 +43,27 @@ TEST(VertexGather, EqualsThePlainSumInTheVerticesOwnOrder) {
             ASSERT_NEAR(out[3 * v + c], sum, 1e-5 * (1.0 + sum)) << "vertex " << v << " channel " << c;
         }
     EXPECT_EQ(out[0], 0.0f);  // no weights: no radiance
+}
+
+// Two signals in one pass give, bit for bit, what two passes give.
+TEST(VertexGather, TwoSignalsAtOnceAreTwoGathers) {
+    const std::uint32_t samples = 500, vertices = 3000;
+    const VertexWeights w = randomWeights(vertices, samples, 7);
+    std::mt19937 rng(11);
+    std::vector<float> a(samples * 3), b(samples * 3);
+    for (float& v : a) v = float(rng() % 10000) / 100.0f;
+    for (float& v : b) v = float(rng() % 10000) / 7.0f;
+    const VertexGather gather(w, samples);
+    std::vector<Float4> scratch;
+    std::vector<float> outA(vertices * 3), outB(vertices * 3), aloneA(vertices * 3), aloneB(vertices * 3);
+    gather.apply(a, b, outA, outB, scratch);
+    gather.apply(a, aloneA, scratch);
+    gather.apply(b, aloneB, scratch);
+    EXPECT_EQ(outA, aloneA);
+    EXPECT_EQ(outB, aloneB);
+    EXPECT_NE(outA, outB);
+    std::vector<float> shortB(vertices * 3 - 3);
+    EXPECT_THROW(gather.apply(a, b, outA, shortB, scratch), Error);
 }
 
 TEST(VertexGather, RefusesASampleOutOfRangeAndMismatchedSizes) {
