@@ -42,20 +42,28 @@ Image saturatedPicture(int width, int height) {
 struct GlWindow {
     GLFWwindow* window = nullptr;
     int width = 0, height = 0;
+    std::string error;  // GLFW's reason when there is no window
 
     GlWindow(int w, int h) {
-        if (!glfwInit()) return;
+        if (!glfwInit()) {
+            noteError();
+            return;
+        }
         glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
         glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
         glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
         glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
         glfwWindowHint(GLFW_RESIZABLE, GLFW_FALSE);
         window = glfwCreateWindow(w, h, "gpu display test", nullptr, nullptr);
-        if (!window) return;
+        if (!window) {
+            noteError();
+            return;
+        }
         glfwMakeContextCurrent(window);
         if (!gladLoadGL(glfwGetProcAddress)) {
             glfwDestroyWindow(window);
             window = nullptr;
+            error = "glad could not load OpenGL's functions";
             return;
         }
         glfwGetFramebufferSize(window, &width, &height);
@@ -63,6 +71,12 @@ struct GlWindow {
     ~GlWindow() {
         if (window) glfwDestroyWindow(window);
         glfwTerminate();
+    }
+
+    void noteError() {
+        const char* description = nullptr;
+        const int code = glfwGetError(&description);
+        error = "GLFW error " + std::to_string(code) + ": " + (description ? description : "none");
     }
 
     // The back buffer's RGB codes, row 0 at the top.
@@ -83,7 +97,7 @@ int code(float v) { return int(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
 
 TEST(GpuDisplay, TheWindowShowsTheCpuTransformOfTheSceneLinearPicture) {
     const GlWindow gl(96, 64);
-    ASSERT_NE(gl.window, nullptr) << "no OpenGL 3.3 core window (the view tests run under xvfb-run)";
+    ASSERT_NE(gl.window, nullptr) << "no OpenGL 3.3 core window (the view tests run under xvfb-run): " << gl.error;
     const ColorConfig config = ColorConfig::fromEnvironment();
     const std::string display = config.defaultDisplay();
     const Image linear = saturatedPicture(gl.width, gl.height);
@@ -127,7 +141,7 @@ TEST(GpuDisplay, TheWindowShowsTheCpuTransformOfTheSceneLinearPicture) {
 
 TEST(GpuDisplay, AnUnknownViewIsRefusedNamingIt) {
     const GlWindow gl(32, 32);
-    ASSERT_NE(gl.window, nullptr);
+    ASSERT_NE(gl.window, nullptr) << gl.error;
     PictureTexture picture;
     const ColorConfig config = ColorConfig::fromEnvironment();
     try {
