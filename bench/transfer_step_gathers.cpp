@@ -46,8 +46,8 @@ Weights engineWeights(const TranslucentAsset& asset, const Material& material, s
 }
 
 // L_o = sum_k (s_k / pi) y_k + (R_disk / pi) E_o per channel, y: K x 3 for output o.
-void formRadiance(const Weights& w, std::span<const double> y, std::span<const float> e, std::size_t o,
-                  std::span<float> out) {
+void radianceAt(const Weights& w, std::span<const double> y, std::span<const float> e, std::size_t o,
+                std::span<float> out) {
     const std::size_t K = w.s[0].size();
     for (int c = 0; c < 3; ++c) {
         double sum = 0.0;
@@ -72,7 +72,7 @@ std::vector<float> losslessRows(const TransferSamples& mm, const BasisLookup& lo
                     if (i == o) continue;  // the self term, added at run time
                     for (int c = 0; c < 3; ++c) y[3 * k + c] += double(t[k * n + i]) * e[3 * i + c];
                 }
-            formRadiance(w, y, e, o, out);
+            radianceAt(w, y, e, o, out);
         }
     });
     return out;
@@ -105,7 +105,7 @@ std::vector<float> step1Rows(const TranslucentAsset& asset, const TransferSample
                         for (int c = 0; c < 3; ++c)
                             y[3 * k + c] += double(kept.value[q]) * we[3 * std::size_t(kept.column[q]) + c];
                 }
-                formRadiance(w, y, e, o, out);
+                radianceAt(w, y, e, o, out);
             }
         });
     }
