@@ -94,20 +94,13 @@ std::vector<float> step1Rows(const TranslucentAsset& asset, const TransferSample
     for (std::size_t begin = 0; begin < n; begin += kRowBlock) {
         const std::size_t end = std::min(n, begin + kRowBlock);
         const std::vector<Step1Rows> rows = compressRows(plan, mm, lookup, begin, end, nullptr, CancelToken());
-        tbb::parallel_for(tbb::blocked_range<std::size_t>(begin, end, 16), [&](const tbb::blocked_range<std::size_t>& r) {
-            std::vector<double> y(3 * K);
-            for (std::size_t o = r.begin(); o != r.end(); ++o) {
-                std::fill(y.begin(), y.end(), 0.0);
-                for (std::size_t k = 0; k < K; ++k) {
-                    const Step1Rows& kept = rows[k];
-                    const std::size_t at = (o - begin) * kept.perRow;
-                    for (std::size_t q = at; q < at + kept.perRow; ++q)
-                        for (int c = 0; c < 3; ++c)
-                            y[3 * k + c] += double(kept.value[q]) * we[3 * std::size_t(kept.column[q]) + c];
-                }
-                radianceAt(w, y, e, o, out);
-            }
-        });
+        std::vector<double> y((end - begin) * 3 * K, 0.0);  // y_k = T_k E for the block's rows
+        for (std::size_t k = 0; k < K; ++k)
+            forEachRowEntry(rows[k], begin, [&](std::uint32_t o, std::uint32_t j, float value) {
+                for (int c = 0; c < 3; ++c) y[((o - begin) * K + k) * 3 + c] += double(value) * we[3 * std::size_t(j) + c];
+            });
+        for (std::size_t o = begin; o < end; ++o)
+            radianceAt(w, std::span<const double>(y).subspan((o - begin) * 3 * K, 3 * K), e, o, out);
     }
     return out;
 }
