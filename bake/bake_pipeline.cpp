@@ -309,7 +309,7 @@ double measureTransferError(const TranslucentAsset& asset, std::uint64_t seed) {
     const std::array<std::vector<double>, 3> s =
         ProfileProjection(asset.basis, profileFitRadius(asset)).project(asset.defaultMaterial);
     std::array<std::vector<float>, 3> compressed;
-    for (int c = 0; c < 3; ++c) compressed[c] = applyTransfer(asset.transfer, asset.layout, s[c], irradiance);
+    for (int c = 0; c < 3; ++c) compressed[c] = applyTransfer(asset.transfer, asset.layout, s[c], irradiance, asset.samples);
 
     // The self term R_disk(rho_o) E_o, which the relighter adds to the product of the
     // matrices (SelfTerm::AtRunTime), on both sides: the error is the compression's,

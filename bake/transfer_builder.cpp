@@ -24,6 +24,7 @@ CompressedTransfer buildTransfer(std::span<const SurfaceSample> samples, const C
     StageScope stage(progress, "transfer step 2 (CDF 9/7)", 2 * n * plan.K());
     std::vector<Step1Columns> columns(plan.K());
     EnergyHistogram all;
+    std::vector<float> harmonics = gatherHarmonics(rows, 0, n);
     for (std::size_t k = 0; k < plan.K(); ++k) {
         columns[k] = gatherColumns(0, n, [&](auto&& visit) { forEachRowEntry(rows[k], 0, visit); });
         rows[k] = Step1Rows{};
@@ -32,6 +33,7 @@ CompressedTransfer buildTransfer(std::span<const SurfaceSample> samples, const C
     const int minBin = all.thresholdBin(settings.energyFraction);
 
     CompressedTransfer out = transferShell(plan, minBin, weights);
+    out.harmonics = std::move(harmonics);
     for (std::size_t k = 0; k < plan.K(); ++k) {
         const KeptColumns kept = keptColumns(columns[k], layout, weights, k, minBin, stage, cancel);
         columns[k] = Step1Columns{};

@@ -62,13 +62,45 @@ TransferSamples toTransferSamples(std::span<const SurfaceSample> samples, double
     mm.y.resize(n);
     mm.z.resize(n);
     mm.area.resize(n);
+    for (std::vector<float>& plane : mm.harmonics) plane.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
+        const std::array<float, kNormalHarmonics> y = normalHarmonics(samples[i].normal);
+        for (std::size_t q = 0; q < kNormalHarmonics; ++q) mm.harmonics[q][i] = y[q];
         mm.x[i] = samples[i].position.x * toMm;
         mm.y[i] = samples[i].position.y * toMm;
         mm.z[i] = samples[i].position.z * toMm;
         mm.area[i] = samples[i].area * toMm * toMm;
     }
     return mm;
+}
+
+void harmonicRow(std::span<const float> rows, std::size_t stride, std::size_t K, const TransferSamples& samples,
+                 std::span<float> h) {
+    const std::size_t n = samples.size();
+    if (K == 0 || stride < n || rows.size() < (K - 1) * stride + n || h.size() != K * kNormalHarmonics)
+        throw Error("harmonicRow: " + std::to_string(rows.size()) + " row values (stride " + std::to_string(stride) +
+                    ") and " + std::to_string(h.size()) + " sums do not fit K = " + std::to_string(K) + " rows of " +
+                    std::to_string(n) + " samples");
+    constexpr std::size_t kBlock = 2048, kLanes = 16;  // a block of the nine planes: 72 KiB
+    std::vector<double> sums(K * kNormalHarmonics, 0.0);
+    for (std::size_t begin = 0; begin < n; begin += kBlock) {
+        const std::size_t end = std::min(n, begin + kBlock);
+        for (std::size_t k = 0; k < K; ++k) {
+            const float* row = rows.data() + k * stride;
+            for (std::size_t q = 0; q < kNormalHarmonics; ++q) {
+                const float* y = samples.harmonics[q].data();
+                float lanes[kLanes] = {};
+                std::size_t i = begin;
+                for (; i + kLanes <= end; i += kLanes)
+                    for (std::size_t l = 0; l < kLanes; ++l) lanes[l] += row[i + l] * y[i + l];
+                double sum = 0.0;
+                for (; i < end; ++i) sum += double(row[i]) * double(y[i]);
+                for (float v : lanes) sum += double(v);
+                sums[k * kNormalHarmonics + q] += sum;
+            }
+        }
+    }
+    for (std::size_t i = 0; i < sums.size(); ++i) h[i] = float(sums[i]);
 }
 
 void transferRow(std::size_t o, const TransferSamples& samples, const BasisLookup& lookup,

@@ -4,9 +4,11 @@
 // distance loop vectorizes) and the basis table position is found once per pair for all K.
 #pragma once
 
+#include "schema/asset/normal_harmonics.h"
 #include "schema/asset/translucent_asset.h"
 #include "schema/scatter/profile_basis.h"
 
+#include <array>
 #include <cstddef>
 #include <span>
 #include <vector>
@@ -18,6 +20,8 @@ namespace opal {
 struct TransferSamples {
     std::vector<float> x, y, z;  // mm
     std::vector<float> area;     // mm^2
+    // Y_q(n_i) of the samples' normals, one plane per q (schema/asset/normal_harmonics.h).
+    std::array<std::vector<float>, kNormalHarmonics> harmonics;
 
     std::size_t size() const { return area.size(); }
 };
@@ -37,6 +41,12 @@ void transferRow(std::size_t o, const TransferSamples& samples, const BasisLooku
 // The same with stride N: rows[k * N + i], rows.size() == K * N.
 void transferRow(std::size_t o, const TransferSamples& samples, const BasisLookup& lookup,
                  std::span<float> rows);
+
+// h[k * 9 + q] = sum_i rows[k * stride + i] Y_q(n_i), k < K: a row's transfer of the nine
+// normal harmonics (CompressedTransfer::harmonics), summed in float over blocks that fit
+// the cache and in double across them. Throws opal::Error for mismatched sizes.
+void harmonicRow(std::span<const float> rows, std::size_t stride, std::size_t K, const TransferSamples& samples,
+                 std::span<float> h);
 
 // A row stride to use instead of N: N rounded up to whole 64-byte cache lines, plus one.
 // All K rows are written at once; with a stride that is a multiple of 4 KiB (N = 65,536

@@ -141,11 +141,13 @@ std::vector<Step1Rows> compressRows(const TransferPlan& plan, const TransferSamp
         r.perRow = plan.perRow[std::size_t(k)];
         r.column.resize((end - begin) * r.perRow);
         r.value.resize((end - begin) * r.perRow);
+        r.harmonics.resize((end - begin) * kNormalHarmonics);
     }
     StageScope stage(progress, "transfer step 1 (Haar)", end - begin);
     const std::size_t stride = transferRowStride(n);  // rows of K apart in cache sets
     const std::size_t rowsSize = std::size_t(K - 1) * stride + n;
-    tbb::enumerable_thread_specific<std::vector<float>> scratch([&] { return std::vector<float>(rowsSize + n); });
+    tbb::enumerable_thread_specific<std::vector<float>> scratch(
+        [&] { return std::vector<float>(rowsSize + n + std::size_t(K) * kNormalHarmonics); });
     const std::size_t cellsPerChart = layout.cellsPerChart();
     // Rows keep the largest |c_j| area_j^0.75 rather than the largest |c_j| (area_j: the
     // cells Haar function j covers; a light's coefficient E^_j grows with area_j where the
@@ -160,11 +162,15 @@ std::vector<Step1Rows> compressRows(const TransferPlan& plan, const TransferSamp
         std::vector<float>& buf = scratch.local();
         const std::span<float> all(buf.data(), rowsSize);
         const std::span<float> weighted(buf.data() + rowsSize, n);
+        const std::span<float> harmonics(buf.data() + rowsSize + n, std::size_t(K) * kNormalHarmonics);
         for (std::size_t o = range.begin(); o != range.end(); ++o) {
             transferRow(o, samples, lookup, all, stride);
+            for (int k = 0; k < K; ++k) all[std::size_t(k) * stride + o] = 0.0f;  // the self term: at run time
+            harmonicRow(all, stride, std::size_t(K), samples, harmonics);
             for (int k = 0; k < K; ++k) {
                 const std::span<float> row(buf.data() + std::size_t(k) * stride, n);
-                row[o] = 0.0f;  // the self term is added at run time (transfer_builder.h)
+                std::copy_n(harmonics.data() + std::size_t(k) * kNormalHarmonics, kNormalHarmonics,
+                            rows[k].harmonics.begin() + (o - begin) * kNormalHarmonics);
                 haarForwardCharts(row, layout);
                 for (std::size_t c = 0; c < n; c += cellsPerChart)
                     for (std::size_t q = 0; q < cellsPerChart; ++q) weighted[c + q] = row[c + q] * importance[q];
@@ -177,6 +183,21 @@ std::vector<Step1Rows> compressRows(const TransferPlan& plan, const TransferSamp
         stage.advance(range.size());
     });
     return rows;
+}
+
+std::vector<float> gatherHarmonics(const std::vector<Step1Rows>& rows, std::size_t begin, std::size_t end) {
+    const std::size_t K = rows.size(), count = end - begin;
+    std::vector<float> out(count * K * kNormalHarmonics);
+    for (std::size_t k = 0; k < K; ++k) {
+        if (rows[k].harmonics.size() != count * kNormalHarmonics)
+            throw Error("transfer: matrix " + std::to_string(k) + " has harmonics for " +
+                        std::to_string(rows[k].harmonics.size() / kNormalHarmonics) + " rows, expected " +
+                        std::to_string(count));
+        for (std::size_t o = 0; o < count; ++o)
+            std::copy_n(rows[k].harmonics.data() + o * kNormalHarmonics, kNormalHarmonics,
+                        out.data() + (o * K + k) * kNormalHarmonics);
+    }
+    return out;
 }
 
 // Step 2 ranks the 9/7 coefficients of all K matrices together by a weighted energy,

@@ -2,6 +2,7 @@
 
 #include "bake/transfer_row.h"
 #include "bake/transfer_stages.h"
+#include "schema/asset/normal_harmonics.h"
 #include "schema/asset/self_term.h"
 #include "schema/error.h"
 #include "schema/scatter/profile_projection.h"
@@ -89,16 +90,32 @@ std::vector<float> step1Rows(const TranslucentAsset& asset, const TransferSample
                              const TransferSettings& settings, const Weights& w, std::span<const float> e) {
     const std::size_t n = mm.size(), K = std::size_t(lookup.K());
     const TransferPlan plan = planTransfer(n, asset.layout, asset.basis, settings);
-    const std::vector<float> we = haarOfIrradiance(asset.layout, e);
+    // As the engine: with the harmonic transfer, step 1 carries only E's residual after its
+    // smooth part, whose transfer is exact (docs/ARCHITECTURE.md#harmonic-transfer).
+    const bool split = !asset.transfer.harmonics.empty();
+    std::vector<float> a, residual(e.begin(), e.end());
+    if (split) {
+        const HarmonicFit fit(asset.samples);
+        a = fit.coefficients(e, 3);
+        fit.residual(e, 3, a, residual, 3);
+    }
+    const std::vector<float> we = haarOfIrradiance(asset.layout, residual);
     std::vector<float> out(3 * n);
     for (std::size_t begin = 0; begin < n; begin += kRowBlock) {
         const std::size_t end = std::min(n, begin + kRowBlock);
         const std::vector<Step1Rows> rows = compressRows(plan, mm, lookup, begin, end, nullptr, CancelToken());
         std::vector<double> y((end - begin) * 3 * K, 0.0);  // y_k = T_k E for the block's rows
-        for (std::size_t k = 0; k < K; ++k)
+        for (std::size_t k = 0; k < K; ++k) {
             forEachRowEntry(rows[k], begin, [&](std::uint32_t o, std::uint32_t j, float value) {
                 for (int c = 0; c < 3; ++c) y[((o - begin) * K + k) * 3 + c] += double(value) * we[3 * std::size_t(j) + c];
             });
+            if (!split) continue;
+            for (std::size_t o = begin; o < end; ++o)
+                for (std::size_t q = 0; q < kNormalHarmonics; ++q)
+                    for (int c = 0; c < 3; ++c)
+                        y[((o - begin) * K + k) * 3 + c] +=
+                            double(a[q * 3 + c]) * rows[k].harmonics[(o - begin) * kNormalHarmonics + q];
+        }
         for (std::size_t o = begin; o < end; ++o)
             radianceAt(w, std::span<const double>(y).subspan((o - begin) * 3 * K, 3 * K), e, o, out);
     }

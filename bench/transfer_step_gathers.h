@@ -7,7 +7,9 @@
 //              basis's
 //   step 1     the same with each row of T_k cut to the Haar coefficients the bake's step 1
 //              keeps (bake/transfer_stages.h compressRows), multiplied by E's Haar
-//              coefficients; the error against `lossless` is step 1's
+//              coefficients (of E's residual after its smooth part when the asset has the
+//              harmonic transfer, whose exact product is added, as the engine does); the
+//              error against `lossless` is step 1's
 //
 // What the engine adds beyond `step 1` is step 2 and the stored values' precision. s_k and
 // the self term are the engine's (ProfileProjection of the clamped material; R_disk when

@@ -109,15 +109,19 @@ void runRows(const TaskContext& c, std::uint32_t index, const CancelToken& cance
     std::vector<Step1Rows> rows =
         compressRows(c.plan, toTransferSamples(asset.samples, asset.unitsPerMm), BasisLookup(asset.basis), begin, end,
                      nullptr, cancel);
-    // Section by section, each k's rows released once written: the rows are the peak.
-    TaskFileWriter file(c.folder.output(FarmStage::Rows, index), rows.size() * c.spec.shards);
+    // Section by section, each k's rows released once written: the rows are the peak. The
+    // last section: the rows' harmonic transfer, which the merge joins.
+    TaskFileWriter file(c.folder.output(FarmStage::Rows, index), rows.size() * c.spec.shards + 1);
     const std::vector<std::uint32_t> blockOf = columnBlocks(c);
+    SectionWriter harmonics;
+    harmonics.array(gatherHarmonics(rows, begin, end));
     std::vector<std::string> sections;
     for (Step1Rows& k : rows) {
         rowsSections(k, begin, end - begin, blockOf, c.spec.shards, sections);
         for (const std::string& section : sections) file.add(section);
         k = Step1Rows{};
     }
+    file.add(harmonics.take());
     passCrashPoints(FarmStage::Rows, index);
     file.commit();
 }
@@ -256,12 +260,31 @@ void addFarmStats(const TaskContext& c, double mergeSeconds, BakeReport& report)
     for (const StageTasks& s : report.farmStages) report.peakRssBytes = std::max(report.peakRssBytes, s.peakRssBytes);
 }
 
+// CompressedTransfer::harmonics from every rows shard's last section, in row order.
+std::vector<float> joinHarmonics(const TaskContext& c) {
+    const std::size_t K = c.plan.K();
+    std::vector<float> all(c.plan.n() * K * kNormalHarmonics);
+    for (std::uint32_t s = 0; s < c.spec.shards; ++s) {
+        const auto [begin, end] = c.shard(s);
+        SectionReader r = TaskFile(c.folder.output(FarmStage::Rows, s)).section(K * c.spec.shards);
+        const auto values = r.array<float>("harmonic transfer");
+        r.expectEnd();
+        if (values.size() != (end - begin) * K * kNormalHarmonics)
+            r.fail("harmonic transfer", "holds " + std::to_string(values.size()) + " values, the shard's " +
+                                            std::to_string(end - begin) + " rows need " +
+                                            std::to_string((end - begin) * K * kNormalHarmonics));
+        std::copy(values.begin(), values.end(), all.begin() + begin * K * kNormalHarmonics);
+    }
+    return all;
+}
+
 std::string runMerge(const TaskContext& c, const CancelToken& cancel) {
     const auto start = std::chrono::steady_clock::now();
     const EnergyHistogram all = allEnergies(c);
     const int minBin = all.thresholdBin(c.plan.settings.energyFraction);
     TranslucentAsset asset = c.prepared.asset;
     asset.transfer = transferShell(c.plan, minBin, c.weights);
+    asset.transfer.harmonics = joinHarmonics(c);
     const std::vector<TaskFile> kept = stageFiles(c, FarmStage::Keep);
     for (std::size_t k = 0; k < c.plan.K(); ++k) {
         std::vector<KeptColumns> blocks;  // one k's kept coefficients, read once

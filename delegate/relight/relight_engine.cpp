@@ -102,6 +102,11 @@ RelightEngine::RelightEngine(std::shared_ptr<const TranslucentAsset> asset)
     paddedK_ = (K_ + 3) / 4 * 4;
     moments_ = IrradianceMoments(std::uint32_t(samples_), 1);
     products_.assign(K_ * samples_ * 3, 0.0f);
+    if (!asset_->transfer.harmonics.empty()) {
+        harmonics_.emplace(asset_->samples);
+        smooth_ = asset_->transfer.harmonics;
+        cdf97ForwardCharts(std::span<float>(smooth_), asset_->layout, std::uint32_t(K_ * kNormalHarmonics));
+    }
     material_.eta = 0.0;  // forces the first setMaterial to weigh the products
     setMaterial(asset_->defaultMaterial);
 }
@@ -113,9 +118,16 @@ void RelightEngine::setIrradiance(const IrradianceMoments& irradiance) {
                     std::to_string(irradiance.terms) + " moments for an asset of " + std::to_string(samples_) +
                     " samples (1 to 3 moments)");
     const std::size_t C = irradiance.channels(), W = (C + 3) / 4 * 4;
-    // wE = w0 E: every moment and channel at once, padded to W lanes.
+    // wE = w0 E: every moment and channel at once, padded to W lanes; with the harmonics,
+    // w0 of E's residual after its smooth part (docs/ARCHITECTURE.md#harmonic-transfer).
     haar_.assign(samples_ * W, 0.0f);
-    for (std::size_t i = 0; i < samples_; ++i) std::copy_n(irradiance.sample(i), C, haar_.data() + i * W);
+    std::vector<float> smooth;
+    if (harmonics_) {
+        smooth = harmonics_->coefficients(irradiance.values, C);
+        harmonics_->residual(irradiance.values, C, smooth, haar_, W);
+    } else {
+        for (std::size_t i = 0; i < samples_; ++i) std::copy_n(irradiance.sample(i), C, haar_.data() + i * W);
+    }
     haarForwardCharts(std::span<float>(haar_), asset_->layout, std::uint32_t(W));
     input_.resize(haar_.size());
     product_.arrangeInput(haar_, W, input_);
@@ -126,9 +138,23 @@ void RelightEngine::setIrradiance(const IrradianceMoments& irradiance) {
                       [&](const tbb::blocked_range<std::uint32_t>& rows) {
                           product_.multiplyRows(input_.data(), W, products_.data(), C, rows.begin(), rows.end());
                       });
+    if (harmonics_) addSmoothProducts(smooth, C);
     moments_ = irradiance;
     fresnel_ = fresnelMoments(material_.eta, int(moments_.terms), moments_.basis);
     formRadiance(true);
+}
+
+// y_{k,m}(p) += sum_q a_{q,m} (w1 T_k Y_q)(p): the smooth part of E, transferred exactly.
+void RelightEngine::addSmoothProducts(std::span<const float> a, std::size_t C) {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, samples_, 2048), [&](const tbb::blocked_range<std::size_t>& r) {
+        for (std::size_t p = r.begin(); p != r.end(); ++p)
+            for (std::size_t k = 0; k < K_; ++k) {
+                const float* u = smooth_.data() + (p * K_ + k) * kNormalHarmonics;
+                float* y = products_.data() + (p * K_ + k) * C;
+                for (std::size_t q = 0; q < kNormalHarmonics; ++q)
+                    for (std::size_t c = 0; c < C; ++c) y[c] += a[q * C + c] * u[q];
+            }
+    });
 }
 
 std::vector<std::string> RelightEngine::setMaterial(const Material& material) {
@@ -256,7 +282,7 @@ std::size_t RelightEngine::memoryBytes() const {
     return product_.memoryBytes() + bytesOf(moments_.values) + bytesOf(haar_) + bytesOf(input_) + bytesOf(products_) +
            bytesOf(weighted_) + bytesOf(fresnel_) + bytesOf(profile_) + bytesOf(self_) + bytesOf(radiance_) + bytesOf(irradiance_) +
            vertexRadiance_.memoryBytes() + vertexIrradiance_.memoryBytes() + bytesOf(padded_) +
-           gather_.memoryBytes();
+           gather_.memoryBytes() + bytesOf(smooth_) + (harmonics_ ? harmonics_->patterns().size_bytes() : 0);
 }
 
 }  // namespace opal

@@ -1,9 +1,12 @@
 // Relighting one translucent asset: the paper's rendering algorithm, steps 1-5
 // (docs/ARCHITECTURE.md#relighting), with Fresnel moments (#fresnel-moments).
 //
-//   setIrradiance:  wE_m = w0 E_m                     Haar per chart, every m and RGB
-//                   y_{k,m} = (w1 T_k w0^-1) wE_m      one pass over each sparse matrix
-//                                                      (TransferProduct), all m x RGB at once
+//   setIrradiance:  E_m = sum_q a_{q,m} Y_q + R_m      the normal harmonics' least squares,
+//                                                      when the asset has their exact
+//                                                      transfer (normal_harmonics.h)
+//                   wR_m = w0 R_m                     Haar per chart, every m and RGB
+//                   y_{k,m} = (w1 T_k w0^-1) wR_m      one pass over each sparse matrix
+//                           + sum_q a_{q,m} w1 (T_k Y_q)    (TransferProduct), all m x RGB at once
 //   setMaterial:    s_k(sigma, eta) per channel (ProfileProjection), c_m(eta)
 //                   z_k = sum_m c_m y_{k,m}            only when eta changes
 //                   L = w1^-1 ((1/pi) sum_k s_k z_k)   CDF 9/7 inverse per chart
@@ -23,11 +26,13 @@
 #include "delegate/relight/recycled_buffer.h"
 #include "delegate/relight/transfer_product.h"
 #include "delegate/relight/vertex_gather.h"
+#include "schema/asset/normal_harmonics.h"
 #include "schema/asset/translucent_asset.h"
 #include "schema/scatter/profile_projection.h"
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -83,6 +88,7 @@ private:
     void gatherVertices(bool withIrradiance);  // the vertices' L, and E when it changed
     void weighProducts(bool reweigh, std::size_t begin, std::size_t end);
     NegativeNoise addSelfTermAndProject();  // + the self term, then max(0, L); throws unless finite
+    void addSmoothProducts(std::span<const float> a, std::size_t C);  // y += sum_q a_q w1 (T_k Y_q)
 
     std::shared_ptr<const TranslucentAsset> asset_;
     TransferProduct product_;        // the transfer, compact for y_k (transfer_product.h)
@@ -94,6 +100,8 @@ private:
     std::vector<float> haar_;        // wE_m = w0 E_m: samples x (3 terms, padded to 4 lanes)
     std::vector<float> input_;       // wE_m in the product's input order (arrangeInput)
     std::vector<float> products_;    // y: samples x K x (3 terms)
+    std::optional<HarmonicFit> harmonics_;  // the split of E, when the asset has T_k Y_q
+    std::vector<float> smooth_;      // w1 (T_k Y_q) over outputs: samples x K x 9 (9/7 domain)
     std::vector<float> weighted_;    // z_k = sum_m c_m y_{k,m}: samples x 3 x paddedK
     Material material_;
     std::vector<double> fresnel_;    // c_m(material_.eta)

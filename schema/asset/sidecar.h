@@ -18,8 +18,9 @@ namespace opal {
 
 // 2.0: transfer values on a quantization grid, environment values as half planes (1.0
 // stored both as float planes). 2.1 adds the optional BKID chunk (the bake identifier),
-// 2.2 the optional FBAS chunk, 2.3 the SELF chunk, 2.4 the ENVK chunk.
-inline constexpr FileKind kSidecarKind{"SCAT", {2, 4}};
+// 2.2 the optional FBAS chunk, 2.3 the SELF chunk, 2.4 the ENVK chunk, 2.5 the optional
+// HARM chunk.
+inline constexpr FileKind kSidecarKind{"SCAT", {2, 5}};
 
 // The chunk tags (all required in version 2.0, except BKID: optional, from 2.1).
 namespace sidecar_chunk {
@@ -40,6 +41,9 @@ inline constexpr ChunkTag kSelfTerm{"SELF"};
 // transport. Written flagged required when they hold the occluded residual: a reader that
 // does not know the chunk would light with the residual as if it were the transport.
 inline constexpr ChunkTag kEnvironmentKind{"ENVK"};
+// Optional (2.5): the exact transfer of the normal harmonics, CompressedTransfer::harmonics.
+// Not required: the matrices alone still carry all of the light, less accurately.
+inline constexpr ChunkTag kHarmonics{"HARM"};
 }  // namespace sidecar_chunk
 
 struct SidecarWriteOptions {

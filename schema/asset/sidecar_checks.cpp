@@ -1,5 +1,7 @@
 #include "schema/asset/sidecar_checks.h"
 
+#include "schema/asset/normal_harmonics.h"
+
 #include "schema/error.h"
 
 #include <cmath>
@@ -161,6 +163,16 @@ void checkTransfer(const CompressedTransfer& t, std::uint64_t samples, std::stri
         checkFinite(m.values, context, what + " values");
         checkValueStep(t.valueStep(k), context, what);
     }
+}
+
+void checkHarmonics(std::span<const float> harmonics, std::uint64_t samples, std::uint64_t basisCount,
+                    std::string_view context) {
+    if (harmonics.empty()) return;
+    if (harmonics.size() != samples * basisCount * kNormalHarmonics)
+        fail(context, str(std::uint64_t(harmonics.size())) + " harmonic transfer values, expected samples x K x " +
+                          str(std::uint64_t(kNormalHarmonics)) + " = " +
+                          str(samples * basisCount * kNormalHarmonics));
+    checkFinite(harmonics, context, "harmonic transfer values");
 }
 
 void checkEnvironmentHeader(const EnvironmentTransfer& env, std::string_view context) {

@@ -2,6 +2,7 @@
 // allocations, CSR offsets before the indices that depend on them), then hand it over.
 #include "schema/asset/array_codec.h"
 #include "schema/asset/chunked_file.h"
+#include "schema/asset/normal_harmonics.h"
 #include "schema/asset/point_range.h"
 #include "schema/asset/sidecar.h"
 #include "schema/asset/sidecar_checks.h"
@@ -17,7 +18,7 @@ namespace {
 using namespace sidecar_chunk;
 
 constexpr ChunkTag kKnownChunks[] = {kHeader, kLayout, kSamples, kVertexWeights, kTransfer, kEnvironment, kBakeId,
-                                     kFresnelBasis, kSelfTerm, kEnvironmentKind};
+                                     kFresnelBasis, kSelfTerm, kEnvironmentKind, kHarmonics};
 
 struct Payload {
     ChartLayout layout;
@@ -154,6 +155,18 @@ EnvironmentTransfer readEnvironment(ChunkSource src, std::uint64_t samples) {
     return env;
 }
 
+std::vector<float> readHarmonics(ChunkSource src, std::uint64_t samples, std::uint32_t K) {
+    const std::uint32_t terms = src.readU32(), basisCount = src.readU32();
+    const std::uint64_t rows = src.readU64();
+    if (terms != kNormalHarmonics || basisCount != K || rows != samples)
+        src.fail(str(rows) + " samples x K = " + str(basisCount) + " x " + str(terms) + " harmonics, expected " +
+                 str(samples) + " x " + str(K) + " x " + str(kNormalHarmonics));
+    std::vector<float> values = readFloatPlanes(src, samples * K * kNormalHarmonics, "values");
+    src.finish();
+    sidecar::checkHarmonics(values, samples, K, src.context());
+    return values;
+}
+
 // A u32 chunk holding one of `names` (value v is names[v]); anything else is refused
 // naming the choices.
 std::uint32_t readChoice(ChunkSource src, std::string_view what, std::initializer_list<std::string_view> names) {
@@ -198,6 +211,7 @@ SidecarHeader readSidecar(const std::filesystem::path& path, TranslucentAsset& a
     if (file.find(kFresnelBasis)) p.environment.fresnelBasis = readFresnelBasis(file.open(kFresnelBasis));
     if (file.find(kSelfTerm)) p.transfer.selfTerm = readSelfTerm(file.open(kSelfTerm));
     if (file.find(kEnvironmentKind)) p.environment.kind = readEnvironmentKind(file.open(kEnvironmentKind));
+    if (file.find(kHarmonics)) p.transfer.harmonics = readHarmonics(file.open(kHarmonics), samples, header.basisCount);
     asset.layout = p.layout;
     asset.samples = std::move(p.samples);
     asset.vertexWeights = std::move(p.vertexWeights);

@@ -1,6 +1,7 @@
 // writeSidecar: validate everything first, then stream each chunk into the container.
 #include "schema/asset/array_codec.h"
 #include "schema/asset/chunked_file.h"
+#include "schema/asset/normal_harmonics.h"
 #include "schema/asset/sidecar.h"
 #include "schema/asset/sidecar_checks.h"
 #include "schema/asset/transfer_value_grid.h"
@@ -22,6 +23,7 @@ void validate(const std::filesystem::path& path, const TranslucentAsset& a) {
     sidecar::checkSamples(a.samples, samples, writeContext(path, kSamples));
     sidecar::checkVertexWeights(a.vertexWeights, samples, writeContext(path, kVertexWeights));
     sidecar::checkTransfer(a.transfer, samples, writeContext(path, kTransfer));
+    sidecar::checkHarmonics(a.transfer.harmonics, samples, a.transfer.perBasis.size(), writeContext(path, kHarmonics));
     sidecar::checkEnvironment(a.environment, samples, writeContext(path, kEnvironment));
 }
 
@@ -85,6 +87,13 @@ void writeTransfer(ChunkSink& sink, const CompressedTransfer& t, const ChartLayo
     for (std::size_t k = 0; k < t.perBasis.size(); ++k) writeMatrix(sink, t.perBasis[k], t.valueStep(k), grid);
 }
 
+void writeHarmonics(ChunkSink& sink, const CompressedTransfer& t, std::uint64_t samples) {
+    sink.writeU32(std::uint32_t(kNormalHarmonics));
+    sink.writeU32(std::uint32_t(t.perBasis.size()));
+    sink.writeU64(samples);
+    writeFloatPlanes(sink, t.harmonics);
+}
+
 void writeEnvironment(ChunkSink& sink, const EnvironmentTransfer& env, std::uint64_t samples) {
     sink.writeU32(env.cubeFaceSize);
     sink.writeU32(env.fresnelTerms);
@@ -121,6 +130,9 @@ void writeSidecar(const std::filesystem::path& path, const TranslucentAsset& a,
     if (a.environment.kind != EnvironmentVectorKind::Visible)  // required: see sidecar.h
         all.push_back({kEnvironmentKind, ChunkCodec::Raw, true,
                        [&](ChunkSink& s) { s.writeU32(std::uint32_t(a.environment.kind)); }});
+    if (!a.transfer.harmonics.empty())  // optional: readers older than 2.5 skip it
+        all.push_back({kHarmonics, ChunkCodec::Zstd, false,
+                       [&](ChunkSink& s) { writeHarmonics(s, a.transfer, a.layout.cells()); }});
     writeChunkedFile(path, kSidecarKind, all, {options.zstdLevel});
 }
 

@@ -62,6 +62,11 @@ struct CompressedTransfer {
     double keepFraction = 0.01;          // step 1
     double energyFraction = 0.99998;     // step 2
     SelfTerm selfTerm = SelfTerm::InTransfer;
+    // T_k Y_q, lossless (schema/asset/normal_harmonics.h): harmonics[(o * K + k) * 9 + q] =
+    // sum_{i != o} T_k[o][i] Y_q(n_i), one per output o (grid order), basis function k and
+    // normal harmonic q. Empty: not baked (sidecars before 2.5); the matrices then carry
+    // all of the light.
+    std::vector<float> harmonics;
 
     double valueStep(std::size_t k) const { return k < valueSteps.size() ? valueSteps[k] : 0.0; }
 };

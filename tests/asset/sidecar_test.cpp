@@ -4,6 +4,7 @@
 #include "schema/asset/sidecar.h"
 
 #include "schema/asset/chunked_file.h"
+#include "schema/asset/normal_harmonics.h"
 #include "schema/asset/xxhash64.h"
 #include "schema/error.h"
 #include "tests/asset/synthetic_asset.h"
@@ -55,6 +56,7 @@ void expectSameSidecarParts(const TranslucentAsset& a, const TranslucentAsset& b
         EXPECT_EQ(x.columns, y.columns);
         EXPECT_EQ(bits(x.values), bits(y.values));
     }
+    EXPECT_EQ(bits(a.transfer.harmonics), bits(b.transfer.harmonics));
     EXPECT_EQ(a.environment.cubeFaceSize, b.environment.cubeFaceSize);
     EXPECT_EQ(a.environment.fresnelTerms, b.environment.fresnelTerms);
     EXPECT_EQ(a.environment.offsets, b.environment.offsets);
@@ -228,6 +230,47 @@ TEST(Sidecar, EnvironmentVectorKindRoundTripsAndDefaultsToVisible) {
         [](TranslucentAsset& a) -> EnvironmentVectorKind& { return a.environment.kind; },
         sidecar_chunk::kEnvironmentKind, EnvironmentVectorKind::Visible, EnvironmentVectorKind::Occluded,
         "unknown environment vector kind");
+}
+
+// The exact transfer of the normal harmonics (chunk HARM, 2.5): optional, so that a
+// reader before 2.5 renders from the matrices alone; absent means none.
+TEST(Sidecar, HarmonicTransferRoundTripsAndIsOptional) {
+    TempDir dir;
+    TranslucentAsset original = test::syntheticAsset();
+    roundToStoredPrecision(original);
+    const std::size_t values = original.samples.size() * original.transfer.perBasis.size() * kNormalHarmonics;
+    for (std::size_t i = 0; i < values; ++i) original.transfer.harmonics.push_back(std::sin(float(i)) * 1e-3f);
+    writeSidecar(dir / "harm.opal", original);
+    const ChunkedFileReader file(dir / "harm.opal", kSidecarKind);
+    ASSERT_TRUE(file.find(sidecar_chunk::kHarmonics));
+    EXPECT_FALSE(file.find(sidecar_chunk::kHarmonics)->required);
+    TranslucentAsset loaded;
+    readSidecar(dir / "harm.opal", loaded);
+    expectSameSidecarParts(original, loaded);
+
+    original.transfer.harmonics.clear();
+    writeSidecar(dir / "none.opal", original);
+    EXPECT_FALSE(ChunkedFileReader(dir / "none.opal", kSidecarKind).find(sidecar_chunk::kHarmonics));
+    readSidecar(dir / "none.opal", loaded);
+    EXPECT_TRUE(loaded.transfer.harmonics.empty());
+
+    original.transfer.harmonics.assign(values - 1, 0.0f);
+    expectContains(errorOf([&] { writeSidecar(dir / "short.opal", original); }),
+                   {"short.opal", "HARM", "expected samples x K x 9 = " + std::to_string(values)});
+    original.transfer.harmonics.assign(values, 0.0f);
+    original.transfer.harmonics[7] = std::nanf("");
+    expectContains(errorOf([&] { writeSidecar(dir / "nan.opal", original); }),
+                   {"nan.opal", "HARM", "harmonic transfer values[7] = nan is not finite"});
+    EXPECT_FALSE(std::filesystem::exists(dir / "nan.opal"));
+
+    // A damaged chunk is refused on reading, naming it: the count's K disagrees with HEAD.
+    original.transfer.harmonics.assign(values, 0.5f);
+    writeSidecar(dir / "bad.opal", original);
+    std::vector<RawChunk> chunks = rawChunks(dir / "bad.opal");
+    putBytes(chunk(chunks, sidecar_chunk::kHarmonics).bytes, 4, 4);
+    writeRawChunks(dir / "bad.opal", chunks);
+    expectContains(errorOf([&] { readSidecar(dir / "bad.opal", loaded); }),
+                   {"bad.opal", "HARM", "32 samples x K = 4 x 9 harmonics, expected 32 x 3 x 9"});
 }
 
 TEST(Sidecar, TwoWritesAreByteIdentical) {

@@ -11,6 +11,7 @@
 #include "bake/transfer_builder.h"
 #include "schema/asset/asset_layer.h"
 #include "schema/asset/bake_id.h"
+#include "schema/asset/normal_harmonics.h"
 #include "schema/asset/transfer_apply.h"
 #include "schema/usd/usda_reader.h"
 #include "tests/bake/bake_test_support.h"
@@ -72,7 +73,7 @@ double relativeError(const CompressedTransfer& transfer, const TranslucentAsset&
     double errorSq = 0.0, exactSq = 0.0;
     const int K = asset.basis.K();
     for (int k = 0; k < K; ++k) {
-        const std::vector<float> y = applyTransfer(transfer, asset.layout, unitVector(K, k), irradiance);
+        const std::vector<float> y = applyTransfer(transfer, asset.layout, unitVector(K, k), irradiance, asset.samples);
         for (std::size_t o = 0; o < y.size(); ++o) {
             const double d = double(y[o]) - exact[std::size_t(k)][o];
             errorSq += d * d;
@@ -190,7 +191,7 @@ TEST_F(ExactCandle, KeepingEverythingReproducesTheExactGatherPerBasisFunction) {
     EXPECT_EQ(a.transfer.selfTerm, SelfTerm::AtRunTime);  // the diagonal is 0 in exactGather
 
     for (int k = 0; k < K; ++k) {
-        const std::vector<float> y = applyTransfer(a.transfer, a.layout, unitVector(K, k), *irradiance_);
+        const std::vector<float> y = applyTransfer(a.transfer, a.layout, unitVector(K, k), *irradiance_, a.samples);
         const std::vector<double>& exact = (*exact_)[std::size_t(k)];
         double maxExact = 0.0, maxError = 0.0, errorSq = 0.0, exactSq = 0.0;
         for (std::size_t o = 0; o < y.size(); ++o) {
@@ -205,6 +206,28 @@ TEST_F(ExactCandle, KeepingEverythingReproducesTheExactGatherPerBasisFunction) {
     }
     // The report's own measure (a point light, the default material) agrees.
     EXPECT_LE(report_->transferRelRmse, 1e-5);
+}
+
+// The harmonic transfer is T_k Y_q with nothing dropped: the exact gather (double sums over
+// every pair) of each normal harmonic as the light.
+TEST_F(ExactCandle, HarmonicTransferIsTheExactGatherOfEachHarmonic) {
+    const TranslucentAsset& a = *asset_;
+    const std::size_t n = a.samples.size(), K = std::size_t(a.basis.K());
+    ASSERT_EQ(a.transfer.harmonics.size(), n * K * kNormalHarmonics);
+    for (std::size_t q = 0; q < kNormalHarmonics; ++q) {
+        std::vector<float> light(n);
+        for (std::size_t i = 0; i < n; ++i) light[i] = normalHarmonics(a.samples[i].normal)[q];
+        const std::vector<std::vector<double>> exact = exactGather(a, light);
+        for (std::size_t k = 0; k < K; ++k) {
+            double peak = 0.0, worst = 0.0;
+            for (std::size_t o = 0; o < n; ++o) {
+                peak = std::max(peak, std::abs(exact[k][o]));
+                worst = std::max(worst, std::abs(a.transfer.harmonics[(o * K + k) * kNormalHarmonics + q] - exact[k][o]));
+            }
+            ASSERT_GT(peak, 0.0) << "k = " << k << ", q = " << q;
+            EXPECT_LE(worst, 1e-5 * peak) << "k = " << k << ", q = " << q;
+        }
+    }
 }
 
 TEST_F(ExactCandle, BasisLookupFollowsTheFittedBasis) {
@@ -517,6 +540,8 @@ TEST(BakePipeline, WrittenAssetReadsBackBitExact) {
     }
     EXPECT_EQ(b.transfer.keepFraction, a.transfer.keepFraction);
     EXPECT_EQ(b.transfer.energyFraction, a.transfer.energyFraction);
+    ASSERT_EQ(a.transfer.harmonics.size(), a.samples.size() * a.transfer.perBasis.size() * kNormalHarmonics);
+    EXPECT_TRUE(sameBits(b.transfer.harmonics, a.transfer.harmonics));
     EXPECT_EQ(b.environment.cubeFaceSize, a.environment.cubeFaceSize);
     EXPECT_EQ(b.environment.fresnelTerms, a.environment.fresnelTerms);
     EXPECT_EQ(b.environment.offsets, a.environment.offsets);
@@ -551,9 +576,10 @@ TEST(BakePipeline, WrittenAssetReadsBackBitExact) {
     EXPECT_EQ(b.bake.identifier, a.bake.identifier);
 
     // The reported error is the in-memory asset's, and the stored asset gives the same up
-    // to the material's rounding to float.
+    // to the material's rounding to float: a change of about 1e-7 of L, against an error
+    // of about 2e-3 of L, so 1e-4 of the error.
     EXPECT_EQ(report.transferRelRmse, measureTransferError(a, options.seed));
-    EXPECT_NEAR(measureTransferError(b, options.seed), report.transferRelRmse, 1e-5 * report.transferRelRmse);
+    EXPECT_NEAR(measureTransferError(b, options.seed), report.transferRelRmse, 1e-4 * report.transferRelRmse);
     EXPECT_GT(report.transferRelRmse, 0.0);
 }
 
