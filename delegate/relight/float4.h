@@ -15,4 +15,6 @@ inline Float4 load4(const float* p) {
     return v;
 }
 
+inline void store4(float* p, Float4 v) { std::memcpy(p, &v, sizeof v); }
+
 }  // namespace opal

@@ -104,8 +104,15 @@ RelightEngine::RelightEngine(std::shared_ptr<const TranslucentAsset> asset)
     products_.assign(K_ * samples_ * 3, 0.0f);
     if (!asset_->transfer.harmonics.empty()) {
         harmonics_.emplace(asset_->samples);
-        smooth_ = asset_->transfer.harmonics;
-        cdf97ForwardCharts(std::span<float>(smooth_), asset_->layout, std::uint32_t(K_ * kNormalHarmonics));
+        // w1 U_{k,q}: the 9/7 transform over outputs, then laid out [p][q][paddedK] for the
+        // weighing's K-wide lanes.
+        std::vector<float> w1U = asset_->transfer.harmonics;
+        cdf97ForwardCharts(std::span<float>(w1U), asset_->layout, std::uint32_t(K_ * kNormalHarmonics));
+        smooth_.assign(samples_ * kNormalHarmonics * paddedK_, 0.0f);
+        for (std::size_t p = 0; p < samples_; ++p)
+            for (std::size_t k = 0; k < K_; ++k)
+                for (std::size_t q = 0; q < kNormalHarmonics; ++q)
+                    smooth_[(p * kNormalHarmonics + q) * paddedK_ + k] = w1U[(p * K_ + k) * kNormalHarmonics + q];
     }
     material_.eta = 0.0;  // forces the first setMaterial to weigh the products
     setMaterial(asset_->defaultMaterial);
@@ -121,10 +128,9 @@ void RelightEngine::setIrradiance(const IrradianceMoments& irradiance) {
     // wE = w0 E: every moment and channel at once, padded to W lanes; with the harmonics,
     // w0 of E's residual after its smooth part (docs/ARCHITECTURE.md#harmonic-transfer).
     haar_.assign(samples_ * W, 0.0f);
-    std::vector<float> smooth;
     if (harmonics_) {
-        smooth = harmonics_->coefficients(irradiance.values, C);
-        harmonics_->residual(irradiance.values, C, smooth, haar_, W);
+        smoothFit_ = harmonics_->coefficients(irradiance.values, C);
+        harmonics_->residual(irradiance.values, C, smoothFit_, haar_, W);
     } else {
         for (std::size_t i = 0; i < samples_; ++i) std::copy_n(irradiance.sample(i), C, haar_.data() + i * W);
     }
@@ -138,23 +144,9 @@ void RelightEngine::setIrradiance(const IrradianceMoments& irradiance) {
                       [&](const tbb::blocked_range<std::uint32_t>& rows) {
                           product_.multiplyRows(input_.data(), W, products_.data(), C, rows.begin(), rows.end());
                       });
-    if (harmonics_) addSmoothProducts(smooth, C);
     moments_ = irradiance;
     fresnel_ = fresnelMoments(material_.eta, int(moments_.terms), moments_.basis);
     formRadiance(true);
-}
-
-// y_{k,m}(p) += sum_q a_{q,m} (w1 T_k Y_q)(p): the smooth part of E, transferred exactly.
-void RelightEngine::addSmoothProducts(std::span<const float> a, std::size_t C) {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, samples_, 2048), [&](const tbb::blocked_range<std::size_t>& r) {
-        for (std::size_t p = r.begin(); p != r.end(); ++p)
-            for (std::size_t k = 0; k < K_; ++k) {
-                const float* u = smooth_.data() + (p * K_ + k) * kNormalHarmonics;
-                float* y = products_.data() + (p * K_ + k) * C;
-                for (std::size_t q = 0; q < kNormalHarmonics; ++q)
-                    for (std::size_t c = 0; c < C; ++c) y[c] += a[q * C + c] * u[q];
-            }
-    });
 }
 
 std::vector<std::string> RelightEngine::setMaterial(const Material& material) {
@@ -180,10 +172,20 @@ std::vector<std::string> RelightEngine::setMaterial(const Material& material) {
 // part: re-weighed from the products (and kept) when eta changed, else read back, so that
 // a sigma edit only weighs K values per channel. z and s/pi are stored channel by channel
 // with K padded to whole registers (the padding stays zero).
+//
+// With the harmonic transfer, z_k also gets the smooth part of E, exact:
+//   z_k += sum_q alpha_q w1 U_{k,q},   alpha_q = sum_m c_m a_{q,m}
+// (docs/ARCHITECTURE.md#harmonic-transfer), K lanes at a time.
 void RelightEngine::weighProducts(bool reweigh, std::size_t begin, std::size_t end) {
     const std::size_t terms = moments_.terms, C = 3 * terms;
     float c[kMaxFresnelTerms];
     for (std::size_t m = 0; m < terms; ++m) c[m] = float(fresnel_[m]);
+    const bool smooth = reweigh && harmonics_ && smoothFit_.size() == kNormalHarmonics * C;
+    float alpha[3][kNormalHarmonics] = {};
+    if (smooth)
+        for (std::size_t ch = 0; ch < 3; ++ch)
+            for (std::size_t q = 0; q < kNormalHarmonics; ++q)
+                for (std::size_t m = 0; m < terms; ++m) alpha[ch][q] += c[m] * smoothFit_[q * C + 3 * m + ch];
     for (std::size_t p = begin; p != end; ++p) {
         float* z = weighted_.data() + p * 3 * paddedK_;
         if (reweigh) {
@@ -194,6 +196,7 @@ void RelightEngine::weighProducts(bool reweigh, std::size_t begin, std::size_t e
                     for (std::size_t m = 0; m < terms; ++m) sum += c[m] * y[k * C + 3 * m + ch];
                     z[ch * paddedK_ + k] = sum;
                 }
+            if (smooth) addSmooth(alpha, p, z);
         }
         for (std::size_t ch = 0; ch < 3; ++ch) {
             Float4 sum = {};
@@ -202,6 +205,17 @@ void RelightEngine::weighProducts(bool reweigh, std::size_t begin, std::size_t e
             radiance_[p * 3 + ch] = (sum[0] + sum[1]) + (sum[2] + sum[3]);
         }
     }
+}
+
+// z[ch][k] += sum_q alpha[ch][q] w1 U_{k,q}(p), four k at a time (the padding stays zero).
+void RelightEngine::addSmooth(const float (&alpha)[3][kNormalHarmonics], std::size_t p, float* z) const {
+    const float* u = smooth_.data() + p * kNormalHarmonics * paddedK_;
+    for (std::size_t ch = 0; ch < 3; ++ch)
+        for (std::size_t k = 0; k < paddedK_; k += 4) {
+            Float4 sum = load4(z + ch * paddedK_ + k);
+            for (std::size_t q = 0; q < kNormalHarmonics; ++q) sum += alpha[ch][q] * load4(u + q * paddedK_ + k);
+            store4(z + ch * paddedK_ + k, sum);
+        }
 }
 
 // L = w1^-1 ((1/pi) sum_k s_k z_k), per channel; then the render-mesh vertices, and E(eta).

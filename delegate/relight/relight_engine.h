@@ -6,9 +6,10 @@
 //                                                      transfer (normal_harmonics.h)
 //                   wR_m = w0 R_m                     Haar per chart, every m and RGB
 //                   y_{k,m} = (w1 T_k w0^-1) wR_m      one pass over each sparse matrix
-//                           + sum_q a_{q,m} w1 (T_k Y_q)    (TransferProduct), all m x RGB at once
+//                                                      (TransferProduct), all m x RGB at once
 //   setMaterial:    s_k(sigma, eta) per channel (ProfileProjection), c_m(eta)
-//                   z_k = sum_m c_m y_{k,m}            only when eta changes
+//                   z_k = sum_m c_m y_{k,m}            only when eta or the light changes,
+//                       + sum_q (sum_m c_m a_{q,m}) w1 (T_k Y_q)   with the harmonic transfer
 //                   L = w1^-1 ((1/pi) sum_k s_k z_k)   CDF 9/7 inverse per chart
 //                   L += (1/pi) R_disk(sigma) E(eta)   the self term, when the asset
 //                                                      leaves it to run time (self_term.h)
@@ -88,7 +89,7 @@ private:
     void gatherVertices(bool withIrradiance);  // the vertices' L, and E when it changed
     void weighProducts(bool reweigh, std::size_t begin, std::size_t end);
     NegativeNoise addSelfTermAndProject();  // + the self term, then max(0, L); throws unless finite
-    void addSmoothProducts(std::span<const float> a, std::size_t C);  // y += sum_q a_q w1 (T_k Y_q)
+    void addSmooth(const float (&alpha)[3][kNormalHarmonics], std::size_t p, float* z) const;  // z += the smooth part
 
     std::shared_ptr<const TranslucentAsset> asset_;
     TransferProduct product_;        // the transfer, compact for y_k (transfer_product.h)
@@ -101,7 +102,8 @@ private:
     std::vector<float> input_;       // wE_m in the product's input order (arrangeInput)
     std::vector<float> products_;    // y: samples x K x (3 terms)
     std::optional<HarmonicFit> harmonics_;  // the split of E, when the asset has T_k Y_q
-    std::vector<float> smooth_;      // w1 (T_k Y_q) over outputs: samples x K x 9 (9/7 domain)
+    std::vector<float> smooth_;      // w1 U_{k,q} = w1 (T_k Y_q): samples x 9 x paddedK (9/7 domain)
+    std::vector<float> smoothFit_;   // a_{q,m}: 9 x (3 terms), from the last setIrradiance
     std::vector<float> weighted_;    // z_k = sum_m c_m y_{k,m}: samples x 3 x paddedK
     Material material_;
     std::vector<double> fresnel_;    // c_m(material_.eta)

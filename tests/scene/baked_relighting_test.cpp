@@ -224,7 +224,9 @@ void expectAccuracyAtTheDefaults(const Shape& shape) {
                     r.zeroedIrradianceTruth);
         EXPECT_LE(a.relativeRmse, 0.01) << shape.name << ' ' << name(light);
         EXPECT_LE(a.luminance.p95, 0.03) << shape.name << ' ' << name(light);
-        if (light != LightCase::Point) EXPECT_LE(a.chromaticity.p95, 0.005) << shape.name << ' ' << name(light);
+        if (light != LightCase::Point) {
+            EXPECT_LE(a.chromaticity.p95, 0.005) << shape.name << ' ' << name(light);
+        }
         // The basis must leave most of the budget to the compression.
         EXPECT_LE(r.basis, 0.005) << shape.name << ' ' << name(light);
         // No negative radiance, and the zeroing stays within the noise: it happens only where
