@@ -41,6 +41,7 @@ StreamedBytes streamedBytes(const TranslucentAsset& asset, int width, int height
     StreamedBytes bytes;
     bytes.light = double(TransferProduct(asset.transfer, asset.samples.size()).memoryBytes()) +
                   4.0 * n * lanes + 4.0 * n * K * 3.0 * terms;
+    if (!asset.transfer.harmonics.empty()) bytes.light += 4.0 * n * 9.0 * (4.0 * std::ceil(K / 4.0) + 2.0);
     bytes.environment =
         dome ? double(EnvironmentVectors(asset.environment, asset.samples.size()).memoryBytes()) + bytes.light : 0.0;
     const double vertices = double(asset.mesh.points.size());
