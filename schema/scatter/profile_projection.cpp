@@ -17,42 +17,52 @@ using RowMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::R
 
 }  // namespace
 
-// G_kj = sum_{l >= first} w_l b_k(r_l) b_j(r_l) (the Gram matrix of the basis beyond rho),
-// D = diag(lambda_1 / lambda_k); the inverse is made once: a material edit then costs the
-// L dipole evaluations and K x L products of the plain projection plus K^2.
+// The ridge, D = diag(mu lambda_1 / lambda_k), is made once; the Gram matrix depends on the
+// material through the tail weights, so a material edit forms and solves it per channel:
+// K^2 L products and a K x K factorization (tens of microseconds at K = 16, L = 256).
 ProfileProjection::ProfileProjection(const ProfileBasis& basis, double innerRadius)
     : basis_(&basis), rho_(innerRadius) {
     if (basis.K() < 1) throw Error("profile projection: the basis is empty");
     if (!(innerRadius >= 0.0))
         throw Error("profile projection: inner radius " + std::to_string(innerRadius) + " mm must be >= 0");
     if (innerRadius == 0.0) return;
-    const std::span<const double> r = basis.radii(), w = basis.weights(), lambda = basis.eigenvalues();
+    const std::span<const double> r = basis.radii(), lambda = basis.eigenvalues();
     first_ = std::size_t(std::lower_bound(r.begin(), r.end(), innerRadius) - r.begin());
-    const Eigen::Index K = basis.K(), L = Eigen::Index(r.size());
-    const Eigen::Map<const RowMatrix> B(basis.values().data(), K, L);  // row k: b_k(r_l)
-    const Eigen::Index tail = L - Eigen::Index(first_);
-    const Eigen::VectorXd wTail = Eigen::Map<const Eigen::VectorXd>(w.data() + first_, tail);
-    Eigen::MatrixXd G = B.rightCols(tail) * wTail.asDiagonal() * B.rightCols(tail).transpose();
-    for (Eigen::Index k = 0; k < K; ++k)
-        G(k, k) += kRidge * std::max(lambda[0], 0.0) / std::max(lambda[std::size_t(k)], 1e-300 * lambda[0]);
-    const RowMatrix inverse = G.ldlt().solve(Eigen::MatrixXd::Identity(K, K));
-    solve_.assign(inverse.data(), inverse.data() + K * K);
+    tail_ = std::size_t(std::lower_bound(r.begin() + std::ptrdiff_t(first_), r.end(), kTailStart * innerRadius) -
+                        r.begin());
+    ridge_.resize(std::size_t(basis.K()));
+    for (std::size_t k = 0; k < ridge_.size(); ++k)
+        ridge_[k] = kRidge * std::max(lambda[0], 0.0) / std::max(lambda[k], 1e-300 * lambda[0]);
+}
+
+double ProfileProjection::tailEmphasis(double x) {
+    if (!(x > 0.0) || !std::isfinite(x)) return 1.0;
+    return std::max(1.0, std::min(1.0 / std::sqrt(x), std::sqrt(x) / kTailFloor));
 }
 
 std::vector<double> ProfileProjection::coefficients(const DipoleCoefficients& c) const {
     return basis_->nonnegative(unconstrainedCoefficients(c));
 }
 
+// The normal equations of the weighted ridge fit of profile_projection.h:
+//   (B V B^T + D) s0 = B V R_d,   V = diag(w_l m_l) over l >= first (0 before).
 std::vector<double> ProfileProjection::unconstrainedCoefficients(const DipoleCoefficients& c) const {
     if (rho_ == 0.0) return basis_->unconstrainedCoefficients(c);
     requireDipoleCoefficients(c, "ProfileProjection::coefficients");
     const std::span<const double> r = basis_->radii(), w = basis_->weights();
     const Eigen::Index K = basis_->K(), L = Eigen::Index(r.size());
-    Eigen::VectorXd weighted = Eigen::VectorXd::Zero(L);
-    for (std::size_t l = first_; l < r.size(); ++l) weighted[Eigen::Index(l)] = w[l] * dipoleProfile(r[l], c);
-    const Eigen::Map<const RowMatrix> B(basis_->values().data(), K, L);
-    const Eigen::Map<const RowMatrix> inverse(solve_.data(), K, K);
-    const Eigen::VectorXd s0 = inverse * (B * weighted);
+    const double atTail = tail_ < r.size() ? dipoleProfile(r[tail_], c) : 0.0;
+    Eigen::VectorXd v = Eigen::VectorXd::Zero(L), target = Eigen::VectorXd::Zero(L);
+    for (std::size_t l = first_; l < r.size(); ++l) {
+        const double profile = dipoleProfile(r[l], c);
+        const double m = l >= tail_ && atTail > 0.0 ? tailEmphasis(profile / atTail) : 1.0;
+        v[Eigen::Index(l)] = w[l] * m;
+        target[Eigen::Index(l)] = w[l] * m * profile;
+    }
+    const Eigen::Map<const RowMatrix> B(basis_->values().data(), K, L);  // row k: b_k(r_l)
+    Eigen::MatrixXd G = B * v.asDiagonal() * B.transpose();
+    G.diagonal() += Eigen::Map<const Eigen::VectorXd>(ridge_.data(), K);
+    const Eigen::VectorXd s0 = G.ldlt().solve(B * target);
     return std::vector<double>(s0.data(), s0.data() + K);
 }
 
