@@ -44,25 +44,40 @@ std::vector<double> ProfileProjection::coefficients(const DipoleCoefficients& c)
     return basis_->nonnegative(unconstrainedCoefficients(c));
 }
 
-// The normal equations of the weighted ridge fit of profile_projection.h:
-//   (B V B^T + D) s0 = B V R_d,   V = diag(w_l m_l) over l >= first (0 before).
+// The weighted ridge fit of profile_projection.h under its one constraint a . s = t:
+//   G = B V B^T + D,  V = diag(w_l m_l) over l >= first (0 before),  y = G^-1 B V R_d,
+//   s0 = y + z (t - a . y) / (a . z),  z = G^-1 a          (Lagrange: G s0 - B V R_d ~ a)
+// with a = B u, t = u . R_d, u_l = w_l on the vanished nodes (x < f^2) and 0 elsewhere;
+// without vanished nodes, s0 = y.
 std::vector<double> ProfileProjection::unconstrainedCoefficients(const DipoleCoefficients& c) const {
     if (rho_ == 0.0) return basis_->unconstrainedCoefficients(c);
     requireDipoleCoefficients(c, "ProfileProjection::coefficients");
     const std::span<const double> r = basis_->radii(), w = basis_->weights();
     const Eigen::Index K = basis_->K(), L = Eigen::Index(r.size());
     const double atTail = tail_ < r.size() ? dipoleProfile(r[tail_], c) : 0.0;
-    Eigen::VectorXd v = Eigen::VectorXd::Zero(L), target = Eigen::VectorXd::Zero(L);
+    Eigen::VectorXd v = Eigen::VectorXd::Zero(L), target = Eigen::VectorXd::Zero(L), u = Eigen::VectorXd::Zero(L);
+    double t = 0.0;
     for (std::size_t l = first_; l < r.size(); ++l) {
         const double profile = dipoleProfile(r[l], c);
-        const double m = l >= tail_ && atTail > 0.0 ? tailEmphasis(profile / atTail) : 1.0;
-        v[Eigen::Index(l)] = w[l] * m;
-        target[Eigen::Index(l)] = w[l] * m * profile;
+        const double x = l >= tail_ && atTail > 0.0 ? profile / atTail : 1.0;
+        v[Eigen::Index(l)] = w[l] * tailEmphasis(x);
+        target[Eigen::Index(l)] = v[Eigen::Index(l)] * profile;
+        if (x < kTailFloor * kTailFloor) {
+            u[Eigen::Index(l)] = w[l];
+            t += w[l] * profile;
+        }
     }
     const Eigen::Map<const RowMatrix> B(basis_->values().data(), K, L);  // row k: b_k(r_l)
     Eigen::MatrixXd G = B * v.asDiagonal() * B.transpose();
     G.diagonal() += Eigen::Map<const Eigen::VectorXd>(ridge_.data(), K);
-    const Eigen::VectorXd s0 = G.ldlt().solve(B * target);
+    const Eigen::LDLT<Eigen::MatrixXd> solver = G.ldlt();
+    Eigen::VectorXd s0 = solver.solve(B * target);
+    const Eigen::VectorXd a = B * u;
+    if (a.squaredNorm() > 0.0) {
+        const Eigen::VectorXd z = solver.solve(a);
+        const double az = a.dot(z);
+        if (az > 0.0) s0 += z * ((t - a.dot(s0)) / az);
+    }
     return std::vector<double>(s0.data(), s0.data() + K);
 }
 

@@ -14,7 +14,14 @@
 //
 // (the emphasis grows as the profile falls, to 100 where it is 1e-4 of its value at r_t,
 // and falls back to 1 where it is 1e-8: a profile that has vanished is fitted as before),
-// then the nearest nonnegative profile (ProfileBasis::nonnegative). rho = 0 is the plain
+// subject to one constraint: where the profile has vanished (x < f^2, the nodes V) the
+// fit carries the dipole's light, no more,
+//
+//     sum_{l in V} w_l sum_k s_k b_k(r_l) = sum_{l in V} w_l R_d(r_l)        (a . s = t)
+//
+// (a bias there of a ten-millionth of the peak, summed over the hundreds of square
+// centimetres of a large object, is a percent of a dim sample's light), then the nearest
+// nonnegative profile (ProfileBasis::nonnegative). rho = 0 is the plain
 // projection, ProfileBasis::coefficients, bit for bit (no ridge, no emphasis): what assets
 // whose transfer holds the self term need.
 #pragma once
