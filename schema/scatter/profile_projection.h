@@ -49,7 +49,7 @@ public:
     double innerRadius() const { return rho_; }
     // Same preconditions as ProfileBasis::coefficients.
     std::vector<double> coefficients(const DipoleCoefficients& c) const;
-    // s0 alone, before the nonnegative step.
+    // s0 alone, before the nonnegative step (the constraint on the vanished tail holds).
     std::vector<double> unconstrainedCoefficients(const DipoleCoefficients& c) const;
     std::array<std::vector<double>, 3> project(const Material& m) const;
 

@@ -152,7 +152,7 @@ TEST(ProfileProjection, FitsTheFarTailOfALongProfile) {
 // summed over the annulus out to 250 mm is still a fraction of the total reflectance, a
 // bias every sample receives and a dim one notices: 0.15-0.19% of the total without the
 // constraint on the vanished nodes (the 65,536-sample bunny's dome then missed its
-// targets, docs/ARCHITECTURE.md#pca), 0.003-0.014% with it. Exact integrals: the basis's
+// targets, docs/ARCHITECTURE.md#pca), 0.002-0.014% with it. Exact integrals: the basis's
 // disk integrals against the dipole's closed form.
 TEST(ProfileProjection, HoldsTheVanishedTailOfALargeObjectNearZero) {
     static const ProfileBasis basis = [] {
