@@ -13,9 +13,9 @@
 //           x = R_d(r_l) / R_d(r_t),  f = 1e-4
 //
 // (the emphasis grows as the profile falls, to 100 where it is 1e-4 of its value at r_t,
-// and falls back to 1 where it is 1e-8: a profile that has vanished is fitted as before),
-// subject to one constraint: where the profile has vanished (x < f^2, the nodes V) the
-// fit carries the dipole's light, no more,
+// and falls back to 1 where it is 1e-8: there the profile has vanished and a squared
+// error hardly counts), subject to one constraint: where the profile has vanished
+// (x < f^2, the nodes V) the fit carries the dipole's light, no more,
 //
 //     sum_{l in V} w_l sum_k s_k b_k(r_l) = sum_{l in V} w_l R_d(r_l)        (a . s = t)
 //
