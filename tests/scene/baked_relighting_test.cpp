@@ -5,12 +5,14 @@
 // (bench/image_accuracy.h). What holds today is asserted: for every light relative RMSE
 // <= 1% and the 95th percentile of the relative luminance error <= 3%; for the dome and the
 // distant light also chromaticity 95th percentile <= 0.005. Measured at 2,048 samples with
-// the harmonic transfer (docs/ARCHITECTURE.md#harmonic-transfer): dome p95 0.4-0.6%,
-// chromaticity 0.0005-0.0009 (1.4-1.9% and 0.002-0.0025 without it); distant p95 0.7-1.2%,
-// chromaticity 0.002-0.004; point p95 1.1-2.8%, chromaticity 0.004-0.008, the torus's
-// point light missing the chromaticity target (printed, not asserted): the compression's
-// error is absolute, so samples lit only through the profile's far tail carry large
-// relative errors. No negative radiance anywhere.
+// the harmonic transfer (docs/ARCHITECTURE.md#harmonic-transfer) and the profile fit of
+// #pca (2026-11-27): dome p95 0.4-0.5%, chromaticity 0.0004-0.0007 (1.4-1.9% and
+// 0.002-0.0025 without the harmonic transfer); distant p95 0.7-1.1%, chromaticity
+// 0.0014-0.0034; point p95 1.1-2.6%, chromaticity 0.0035-0.0071, the torus's point light
+// missing the chromaticity target (printed, not asserted): the compression's error is
+// absolute, so samples lit only through the profile's far tail carry large relative errors
+// (step 2's energy sets it: docs/ARCHITECTURE.md#compression, "Small objects under a point
+// light"). No negative radiance anywhere.
 //
 // The lossless transfer (keep 1, energy 1), summed directly here, separates the PCA
 // profile basis (docs/ARCHITECTURE.md#pca) from the two-step wavelet compression
