@@ -1,8 +1,9 @@
 // The coefficients fitted beyond the self disk (schema/scatter/profile_projection.h,
-// docs/ARCHITECTURE.md#pca): the plain projection at rho = 0, the normal equations of the
-// weighted ridge least-squares fit at rho > 0 checked by brute force, the far tail of a long
-// profile fitted for its relative error against the dipole itself, and a profile that ends
-// inside the disk leaves nothing for the transfer to carry.
+// docs/ARCHITECTURE.md#pca): the plain projection at rho = 0, the optimality conditions of
+// the weighted ridge least-squares fit under its constraint at rho > 0 checked by brute
+// force, the far tail of a long profile fitted for its relative error against the dipole
+// itself, the vanished tail of a large object held to the dipole's light, and a profile
+// that ends inside the disk leaves nothing for the transfer to carry.
 #include "schema/error.h"
 #include "schema/scatter/dipole.h"
 #include "schema/scatter/material.h"
@@ -70,6 +71,7 @@ TEST(ProfileProjection, TailEmphasisRisesTo100AndFallsBack) {
     EXPECT_EQ(ProfileProjection::tailEmphasis(std::nan("")), 1.0);
     EXPECT_EQ(ProfileProjection::tailEmphasis(2.0), 1.0);
 }
+
 // The fit's optimality conditions, in plain loops: the gradient of its objective
 //   g_k = sum_{l: r_l >= rho} w_l m_l b_k (sum_j s_j b_j - R_d) + mu (lambda_1 / lambda_k) s_k
 // is a multiple of the constraint's a_k = sum_{l vanished} w_l b_k(r_l) (zero when no node
