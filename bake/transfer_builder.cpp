@@ -34,6 +34,7 @@ CompressedTransfer buildTransfer(std::span<const SurfaceSample> samples, const C
 
     CompressedTransfer out = transferShell(plan, minBin, weights);
     out.harmonics = std::move(harmonics);
+    out.harmonicSet = mm.harmonicSet;
     for (std::size_t k = 0; k < plan.K(); ++k) {
         const KeptColumns kept = keptColumns(columns[k], layout, weights, k, minBin, stage, cancel);
         columns[k] = Step1Columns{};

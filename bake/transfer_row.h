@@ -20,15 +20,18 @@ namespace opal {
 struct TransferSamples {
     std::vector<float> x, y, z;  // mm
     std::vector<float> area;     // mm^2
-    // Y_q(n_i) of the samples' normals, one plane per q (schema/asset/normal_harmonics.h).
-    std::array<std::vector<float>, kNormalHarmonics> harmonics;
+    // f_q(x_i, n_i) of the harmonic set, one plane per q < harmonicSet.count
+    // (schema/asset/normal_harmonics.h).
+    HarmonicSet harmonicSet;
+    std::vector<std::vector<float>> harmonics;
 
     std::size_t size() const { return area.size(); }
 };
 
 // position / unitsPerMm and area / unitsPerMm^2, rounded to float as position * (1 /
-// unitsPerMm) and (area * (1 / unitsPerMm)) * (1 / unitsPerMm). Throws opal::Error unless
-// unitsPerMm is positive and finite.
+// unitsPerMm) and (area * (1 / unitsPerMm)) * (1 / unitsPerMm); the harmonic planes of
+// harmonicSetFor(samples), in scene units. Throws opal::Error unless unitsPerMm is
+// positive and finite.
 TransferSamples toTransferSamples(std::span<const SurfaceSample> samples, double unitsPerMm);
 
 // rows[k * stride + i] = b_k(|x_o - x_i|) A_i for k < lookup.K() and i < N =
@@ -42,9 +45,10 @@ void transferRow(std::size_t o, const TransferSamples& samples, const BasisLooku
 void transferRow(std::size_t o, const TransferSamples& samples, const BasisLookup& lookup,
                  std::span<float> rows);
 
-// h[k * 9 + q] = sum_i rows[k * stride + i] Y_q(n_i), k < K: a row's transfer of the nine
-// normal harmonics (CompressedTransfer::harmonics), summed in float over blocks that fit
-// the cache and in double across them. Throws opal::Error for mismatched sizes.
+// h[k * Q + q] = sum_i rows[k * stride + i] f_q(x_i, n_i), k < K, q < Q =
+// samples.harmonicSet.count: a row's transfer of the harmonic set
+// (CompressedTransfer::harmonics), summed in float over blocks that fit the cache and in
+// double across them. Throws opal::Error for mismatched sizes.
 void harmonicRow(std::span<const float> rows, std::size_t stride, std::size_t K, const TransferSamples& samples,
                  std::span<float> h);
 

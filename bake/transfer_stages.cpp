@@ -135,19 +135,21 @@ std::vector<Step1Rows> compressRows(const TransferPlan& plan, const TransferSamp
         throw Error("transfer step 1: rows " + std::to_string(begin) + ".." + std::to_string(end) + " of " +
                     std::to_string(n) + " samples do not fit the plan of " + std::to_string(plan.n()) +
                     " samples and K = " + std::to_string(plan.K()));
+    const std::size_t Q = samples.harmonics.size();
     std::vector<Step1Rows> rows(K);
     for (int k = 0; k < K; ++k) {
         Step1Rows& r = rows[std::size_t(k)];
         r.perRow = plan.perRow[std::size_t(k)];
         r.column.resize((end - begin) * r.perRow);
         r.value.resize((end - begin) * r.perRow);
-        r.harmonics.resize((end - begin) * kNormalHarmonics);
+        r.harmonicCount = samples.harmonicSet.count;
+        r.harmonics.resize((end - begin) * Q);
     }
     StageScope stage(progress, "transfer step 1 (Haar)", end - begin);
     const std::size_t stride = transferRowStride(n);  // rows of K apart in cache sets
     const std::size_t rowsSize = std::size_t(K - 1) * stride + n;
     tbb::enumerable_thread_specific<std::vector<float>> scratch(
-        [&] { return std::vector<float>(rowsSize + n + std::size_t(K) * kNormalHarmonics); });
+        [&] { return std::vector<float>(rowsSize + n + std::size_t(K) * Q); });
     const std::size_t cellsPerChart = layout.cellsPerChart();
     // Rows keep the largest |c_j| area_j^0.75 rather than the largest |c_j| (area_j: the
     // cells Haar function j covers; a light's coefficient E^_j grows with area_j where the
@@ -162,15 +164,14 @@ std::vector<Step1Rows> compressRows(const TransferPlan& plan, const TransferSamp
         std::vector<float>& buf = scratch.local();
         const std::span<float> all(buf.data(), rowsSize);
         const std::span<float> weighted(buf.data() + rowsSize, n);
-        const std::span<float> harmonics(buf.data() + rowsSize + n, std::size_t(K) * kNormalHarmonics);
+        const std::span<float> harmonics(buf.data() + rowsSize + n, std::size_t(K) * Q);
         for (std::size_t o = range.begin(); o != range.end(); ++o) {
             transferRow(o, samples, lookup, all, stride);
             for (int k = 0; k < K; ++k) all[std::size_t(k) * stride + o] = 0.0f;  // the self term: at run time
             harmonicRow(all, stride, std::size_t(K), samples, harmonics);
             for (int k = 0; k < K; ++k) {
                 const std::span<float> row(buf.data() + std::size_t(k) * stride, n);
-                std::copy_n(harmonics.data() + std::size_t(k) * kNormalHarmonics, kNormalHarmonics,
-                            rows[k].harmonics.begin() + (o - begin) * kNormalHarmonics);
+                std::copy_n(harmonics.data() + std::size_t(k) * Q, Q, rows[k].harmonics.begin() + (o - begin) * Q);
                 haarForwardCharts(row, layout);
                 for (std::size_t c = 0; c < n; c += cellsPerChart)
                     for (std::size_t q = 0; q < cellsPerChart; ++q) weighted[c + q] = row[c + q] * importance[q];
@@ -187,15 +188,14 @@ std::vector<Step1Rows> compressRows(const TransferPlan& plan, const TransferSamp
 
 std::vector<float> gatherHarmonics(const std::vector<Step1Rows>& rows, std::size_t begin, std::size_t end) {
     const std::size_t K = rows.size(), count = end - begin;
-    std::vector<float> out(count * K * kNormalHarmonics);
+    const std::size_t Q = rows.empty() ? 0 : rows[0].harmonicCount;
+    std::vector<float> out(count * K * Q);
     for (std::size_t k = 0; k < K; ++k) {
-        if (rows[k].harmonics.size() != count * kNormalHarmonics)
-            throw Error("transfer: matrix " + std::to_string(k) + " has harmonics for " +
-                        std::to_string(rows[k].harmonics.size() / kNormalHarmonics) + " rows, expected " +
-                        std::to_string(count));
+        if (rows[k].harmonicCount != Q || rows[k].harmonics.size() != count * Q)
+            throw Error("transfer: matrix " + std::to_string(k) + " has " + std::to_string(rows[k].harmonics.size()) +
+                        " harmonic values, expected " + std::to_string(count) + " rows x " + std::to_string(Q));
         for (std::size_t o = 0; o < count; ++o)
-            std::copy_n(rows[k].harmonics.data() + o * kNormalHarmonics, kNormalHarmonics,
-                        out.data() + (o * K + k) * kNormalHarmonics);
+            std::copy_n(rows[k].harmonics.data() + o * Q, Q, out.data() + (o * K + k) * Q);
     }
     return out;
 }

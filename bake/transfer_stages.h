@@ -43,7 +43,8 @@ struct Step1Rows {
     std::uint32_t perRow = 0;
     std::vector<std::uint32_t> column;  // rows x perRow
     std::vector<float> value;
-    std::vector<float> harmonics;  // rows x kNormalHarmonics: the row's T_k Y_q, before step 1
+    std::uint32_t harmonicCount = 0;  // Q = TransferSamples::harmonicSet.count
+    std::vector<float> harmonics;     // rows x Q: the row's T_k f_q, before step 1
 };
 
 // Step 1 for output rows [begin, end), one Step1Rows per k.
@@ -51,7 +52,7 @@ std::vector<Step1Rows> compressRows(const TransferPlan& plan, const TransferSamp
                                     const BasisLookup& lookup, std::size_t begin, std::size_t end,
                                     ProgressSink* progress, const CancelToken& cancel);
 
-// Rows [begin, end) of CompressedTransfer::harmonics, [((o - begin) K + k) 9 + q], from
+// Rows [begin, end) of CompressedTransfer::harmonics, [((o - begin) K + k) Q + q], from
 // each k's Step1Rows of those rows.
 std::vector<float> gatherHarmonics(const std::vector<Step1Rows>& rows, std::size_t begin, std::size_t end);
 

@@ -41,7 +41,10 @@ StreamedBytes streamedBytes(const TranslucentAsset& asset, int width, int height
     StreamedBytes bytes;
     bytes.light = double(TransferProduct(asset.transfer, asset.samples.size()).memoryBytes()) +
                   4.0 * n * lanes + 4.0 * n * K * 3.0 * terms;
-    if (!asset.transfer.harmonics.empty()) bytes.light += 4.0 * n * 9.0 * (4.0 * std::ceil(K / 4.0) + 2.0);
+    if (!asset.transfer.harmonics.empty()) {  // G read (3 x Q padded), the functions read twice
+        const double Q = double(asset.transfer.harmonicSet.count);
+        bytes.light += 4.0 * n * (3.0 * 4.0 * std::ceil(Q / 4.0) + 2.0 * Q);
+    }
     bytes.environment =
         dome ? double(EnvironmentVectors(asset.environment, asset.samples.size()).memoryBytes()) + bytes.light : 0.0;
     const double vertices = double(asset.mesh.points.size());

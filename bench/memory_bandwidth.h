@@ -17,8 +17,9 @@ double triadBandwidth(std::size_t elements = std::size_t(1) << 24, int repeats =
 // The least each case reads and writes once (bytes), from the engine's own layouts:
 //   light:       the compact transfer (TransferProduct::memoryBytes), the Haar-transformed
 //                moments read and the products y written (samples x K x 3 terms floats);
-//                with the harmonic transfer also w1 U read (samples x 9 x K floats) and the
-//                normal harmonics read twice (fit and residual: samples x 9 floats)
+//                with the harmonic transfer also G read (samples x 3 x Q floats: a light
+//                moved again under the same material, RelightEngine::smoothPass) and the
+//                harmonic functions read twice (fit and residual: samples x Q floats)
 //   environment: the compact dome vectors (EnvironmentVectors::memoryBytes), then as light
 //   material:    z_k read (samples x 3 x K floats), radiance written, the vertex weights
 //                read and the vertex radiance written

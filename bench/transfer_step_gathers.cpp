@@ -92,10 +92,13 @@ std::vector<float> step1Rows(const TranslucentAsset& asset, const TransferSample
     const TransferPlan plan = planTransfer(n, asset.layout, asset.basis, settings);
     // As the engine: with the harmonic transfer, step 1 carries only E's residual after its
     // smooth part, whose transfer is exact (docs/ARCHITECTURE.md#harmonic-transfer).
+    // The rows' harmonic transfer is of mm's set, harmonicSetFor(asset.samples): the
+    // asset's own set when it was baked with 36 functions.
     const bool split = !asset.transfer.harmonics.empty();
+    const std::size_t Q = mm.harmonicSet.count;
     std::vector<float> a, residual(e.begin(), e.end());
     if (split) {
-        const HarmonicFit fit(asset.samples);
+        const HarmonicFit fit(asset.samples, mm.harmonicSet);
         a = fit.coefficients(e, 3);
         fit.residual(e, 3, a, residual, 3);
     }
@@ -111,10 +114,9 @@ std::vector<float> step1Rows(const TranslucentAsset& asset, const TransferSample
             });
             if (!split) continue;
             for (std::size_t o = begin; o < end; ++o)
-                for (std::size_t q = 0; q < kNormalHarmonics; ++q)
+                for (std::size_t q = 0; q < Q; ++q)
                     for (int c = 0; c < 3; ++c)
-                        y[((o - begin) * K + k) * 3 + c] +=
-                            double(a[q * 3 + c]) * rows[k].harmonics[(o - begin) * kNormalHarmonics + q];
+                        y[((o - begin) * K + k) * 3 + c] += double(a[q * 3 + c]) * rows[k].harmonics[(o - begin) * Q + q];
         }
         for (std::size_t o = begin; o < end; ++o)
             radianceAt(w, std::span<const double>(y).subspan((o - begin) * 3 * K, 3 * K), e, o, out);

@@ -261,19 +261,19 @@ void addFarmStats(const TaskContext& c, double mergeSeconds, BakeReport& report)
 }
 
 // CompressedTransfer::harmonics from every rows shard's last section, in row order.
-std::vector<float> joinHarmonics(const TaskContext& c) {
+std::vector<float> joinHarmonics(const TaskContext& c, std::size_t Q) {
     const std::size_t K = c.plan.K();
-    std::vector<float> all(c.plan.n() * K * kNormalHarmonics);
+    std::vector<float> all(c.plan.n() * K * Q);
     for (std::uint32_t s = 0; s < c.spec.shards; ++s) {
         const auto [begin, end] = c.shard(s);
         SectionReader r = TaskFile(c.folder.output(FarmStage::Rows, s)).section(K * c.spec.shards);
         const auto values = r.array<float>("harmonic transfer");
         r.expectEnd();
-        if (values.size() != (end - begin) * K * kNormalHarmonics)
+        if (values.size() != (end - begin) * K * Q)
             r.fail("harmonic transfer", "holds " + std::to_string(values.size()) + " values, the shard's " +
                                             std::to_string(end - begin) + " rows need " +
-                                            std::to_string((end - begin) * K * kNormalHarmonics));
-        std::copy(values.begin(), values.end(), all.begin() + begin * K * kNormalHarmonics);
+                                            std::to_string((end - begin) * K * Q));
+        std::copy(values.begin(), values.end(), all.begin() + begin * K * Q);
     }
     return all;
 }
@@ -284,7 +284,9 @@ std::string runMerge(const TaskContext& c, const CancelToken& cancel) {
     const int minBin = all.thresholdBin(c.plan.settings.energyFraction);
     TranslucentAsset asset = c.prepared.asset;
     asset.transfer = transferShell(c.plan, minBin, c.weights);
-    asset.transfer.harmonics = joinHarmonics(c);
+    // The rows tasks split E over harmonicSetFor(asset.samples) (toTransferSamples): the same set.
+    asset.transfer.harmonicSet = harmonicSetFor(asset.samples);
+    asset.transfer.harmonics = joinHarmonics(c, asset.transfer.harmonicSet.count);
     const std::vector<TaskFile> kept = stageFiles(c, FarmStage::Keep);
     for (std::size_t k = 0; k < c.plan.K(); ++k) {
         std::vector<KeptColumns> blocks;  // one k's kept coefficients, read once

@@ -1,7 +1,7 @@
 // Relighting one translucent asset: the paper's rendering algorithm, steps 1-5
 // (docs/ARCHITECTURE.md#relighting), with Fresnel moments (#fresnel-moments).
 //
-//   setIrradiance:  E_m = sum_q a_{q,m} Y_q + R_m      the normal harmonics' least squares,
+//   setIrradiance:  E_m = sum_q a_{q,m} f_q + R_m      the harmonic set's least squares,
 //                                                      when the asset has their exact
 //                                                      transfer (normal_harmonics.h)
 //                   wR_m = w0 R_m                     Haar per chart, every m and RGB
@@ -9,7 +9,7 @@
 //                                                      (TransferProduct), all m x RGB at once
 //   setMaterial:    s_k(sigma, eta) per channel (ProfileProjection), c_m(eta)
 //                   z_k = sum_m c_m y_{k,m}            only when eta or the light changes,
-//                       + sum_q (sum_m c_m a_{q,m}) w1 (T_k Y_q)   with the harmonic transfer
+//                       + sum_q (sum_m c_m a_{q,m}) w1 (T_k f_q)   with the harmonic transfer
 //                   L = w1^-1 ((1/pi) sum_k s_k z_k)   CDF 9/7 inverse per chart
 //                   L += (1/pi) R_disk(sigma) E(eta)   the self term, when the asset
 //                                                      leaves it to run time (self_term.h)
@@ -87,9 +87,14 @@ public:
 private:
     void formRadiance(bool reweigh);  // L = w1^-1 ((1/pi) sum_k s_k z_k), then the vertices
     void gatherVertices(bool withIrradiance);  // the vertices' L, and E when it changed
-    void weighProducts(bool reweigh, std::size_t begin, std::size_t end);
+    // How a weighing adds the smooth part of E (weighProducts): not at all (none, or z_k
+    // holds it), folded into z_k, or as alpha . G (G refreshed first when s_k changed).
+    enum class SmoothPass { None, Fold, ByFunction, RefreshByFunction };
+    SmoothPass smoothPass(bool reweigh);
+    void weighProducts(bool reweigh, SmoothPass pass, std::size_t begin, std::size_t end);
+    void weighSmooth(std::size_t p);  // G(p) for the current s_k
     NegativeNoise addSelfTermAndProject();  // + the self term, then max(0, L); throws unless finite
-    void addSmooth(const float (&alpha)[3][kNormalHarmonics], std::size_t p, float* z) const;  // z += the smooth part
+    void addSmooth(const float (&alpha)[3][kMaxHarmonics], std::size_t p, float* z) const;  // z += the smooth part
 
     std::shared_ptr<const TranslucentAsset> asset_;
     TransferProduct product_;        // the transfer, compact for y_k (transfer_product.h)
@@ -102,8 +107,12 @@ private:
     std::vector<float> input_;       // wE_m in the product's input order (arrangeInput)
     std::vector<float> products_;    // y: samples x K x (3 terms)
     std::optional<HarmonicFit> harmonics_;  // the split of E, when the asset has T_k Y_q
-    std::vector<float> smooth_;      // w1 U_{k,q} = w1 (T_k Y_q): samples x 9 x paddedK (9/7 domain)
-    std::vector<float> smoothFit_;   // a_{q,m}: 9 x (3 terms), from the last setIrradiance
+    std::vector<float> smooth_;      // w1 U_{k,q} = w1 (T_k f_q): samples x Q x paddedK (9/7 domain)
+    std::vector<float> smoothFit_;   // a_{q,m}: Q x (3 terms), from the last setIrradiance
+    // G_q = sum_k (s_k / pi) w1 U_{k,q}: samples x 3 x Q padded to 4 (weighProducts)
+    std::vector<float> smoothByFunction_;
+    bool smoothByFunctionCurrent_ = false;  // G is of the current s_k
+    bool smoothInWeighted_ = false;         // z_k holds the smooth part of the current light
     std::vector<float> weighted_;    // z_k = sum_m c_m y_{k,m}: samples x 3 x paddedK
     Material material_;
     std::vector<double> fresnel_;    // c_m(material_.eta)

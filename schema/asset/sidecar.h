@@ -19,8 +19,8 @@ namespace opal {
 // 2.0: transfer values on a quantization grid, environment values as half planes (1.0
 // stored both as float planes). 2.1 adds the optional BKID chunk (the bake identifier),
 // 2.2 the optional FBAS chunk, 2.3 the SELF chunk, 2.4 the ENVK chunk, 2.5 the optional
-// HARM chunk.
-inline constexpr FileKind kSidecarKind{"SCAT", {2, 5}};
+// HARM chunk, 2.6 the optional HARP chunk.
+inline constexpr FileKind kSidecarKind{"SCAT", {2, 6}};
 
 // The chunk tags (all required in version 2.0, except BKID: optional, from 2.1).
 namespace sidecar_chunk {
@@ -44,6 +44,10 @@ inline constexpr ChunkTag kEnvironmentKind{"ENVK"};
 // Optional (2.5): the exact transfer of the normal harmonics, CompressedTransfer::harmonics.
 // Not required: the matrices alone still carry all of the light, less accurately.
 inline constexpr ChunkTag kHarmonics{"HARM"};
+// Optional (2.6): the same for the 36 functions of a HarmonicSet with its frame (the normal
+// harmonics times the position), in place of HARM. A reader before 2.6 skips it and
+// renders from the matrices alone; a file holds at most one of the two.
+inline constexpr ChunkTag kPositionHarmonics{"HARP"};
 }  // namespace sidecar_chunk
 
 struct SidecarWriteOptions {

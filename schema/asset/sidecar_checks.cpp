@@ -165,13 +165,19 @@ void checkTransfer(const CompressedTransfer& t, std::uint64_t samples, std::stri
     }
 }
 
-void checkHarmonics(std::span<const float> harmonics, std::uint64_t samples, std::uint64_t basisCount,
-                    std::string_view context) {
+void checkHarmonics(const CompressedTransfer& transfer, std::uint64_t samples, std::string_view context) {
+    const std::span<const float> harmonics = transfer.harmonics;
     if (harmonics.empty()) return;
-    if (harmonics.size() != samples * basisCount * kNormalHarmonics)
+    const HarmonicSet& set = transfer.harmonicSet;
+    if (!isHarmonicCount(set.count))
+        fail(context, "a harmonic set of " + str(std::uint64_t(set.count)) + " functions, expected 9 or 36");
+    if (!(std::isfinite(set.centre.x) && std::isfinite(set.centre.y) && std::isfinite(set.centre.z) &&
+          std::isfinite(set.inverseScale) && set.inverseScale > 0.0f))
+        fail(context, "the harmonic set's frame (centre and inverse scale) is not finite with a positive scale");
+    const std::uint64_t expected = samples * transfer.perBasis.size() * set.count;
+    if (harmonics.size() != expected)
         fail(context, str(std::uint64_t(harmonics.size())) + " harmonic transfer values, expected samples x K x " +
-                          str(std::uint64_t(kNormalHarmonics)) + " = " +
-                          str(samples * basisCount * kNormalHarmonics));
+                          str(std::uint64_t(set.count)) + " = " + str(expected));
     checkFinite(harmonics, context, "harmonic transfer values");
 }
 

@@ -52,9 +52,9 @@ void checkMatrixShape(const SparseMatrix& m, std::uint64_t samples, std::string_
 // A matrix's value step (transfer_value_grid.h): finite and >= 0.
 void checkValueStep(double step, std::string_view context, std::string_view what);
 void checkTransfer(const CompressedTransfer& transfer, std::uint64_t samples, std::string_view context);
-// CompressedTransfer::harmonics: empty, or samples x K x kNormalHarmonics finite values.
-void checkHarmonics(std::span<const float> harmonics, std::uint64_t samples, std::uint64_t basisCount,
-                    std::string_view context);
+// CompressedTransfer::harmonics: empty, or samples x K x Q finite values for a harmonic set
+// of Q = 9 or 36 functions whose frame is finite with a positive inverse scale.
+void checkHarmonics(const CompressedTransfer& transfer, std::uint64_t samples, std::string_view context);
 void checkEnvironmentHeader(const EnvironmentTransfer& env, std::string_view context);
 // Rows of the environment CSR: 0 (not baked) or samples * fresnelTerms.
 std::uint64_t environmentRows(const EnvironmentTransfer& env, std::uint64_t samples);

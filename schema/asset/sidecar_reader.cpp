@@ -3,6 +3,7 @@
 #include "schema/asset/array_codec.h"
 #include "schema/asset/chunked_file.h"
 #include "schema/asset/normal_harmonics.h"
+#include "schema/error.h"
 #include "schema/asset/point_range.h"
 #include "schema/asset/sidecar.h"
 #include "schema/asset/sidecar_checks.h"
@@ -18,7 +19,7 @@ namespace {
 using namespace sidecar_chunk;
 
 constexpr ChunkTag kKnownChunks[] = {kHeader, kLayout, kSamples, kVertexWeights, kTransfer, kEnvironment, kBakeId,
-                                     kFresnelBasis, kSelfTerm, kEnvironmentKind, kHarmonics};
+                                     kFresnelBasis, kSelfTerm, kEnvironmentKind, kHarmonics, kPositionHarmonics};
 
 struct Payload {
     ChartLayout layout;
@@ -155,16 +156,25 @@ EnvironmentTransfer readEnvironment(ChunkSource src, std::uint64_t samples) {
     return env;
 }
 
-std::vector<float> readHarmonics(ChunkSource src, std::uint64_t samples, std::uint32_t K) {
+// HARM (9 functions) or HARP (36 with their frame) into transfer.harmonics and harmonicSet.
+void readHarmonics(ChunkSource src, std::uint64_t samples, std::uint32_t K, std::uint32_t expectedCount,
+                   CompressedTransfer& transfer) {
     const std::uint32_t terms = src.readU32(), basisCount = src.readU32();
     const std::uint64_t rows = src.readU64();
-    if (terms != kNormalHarmonics || basisCount != K || rows != samples)
+    if (terms != expectedCount || basisCount != K || rows != samples)
         src.fail(str(rows) + " samples x K = " + str(basisCount) + " x " + str(terms) + " harmonics, expected " +
-                 str(samples) + " x " + str(K) + " x " + str(kNormalHarmonics));
-    std::vector<float> values = readFloatPlanes(src, samples * K * kNormalHarmonics, "values");
+                 str(samples) + " x " + str(K) + " x " + str(expectedCount));
+    HarmonicSet set;
+    set.count = terms;
+    if (terms != kNormalHarmonics) {
+        for (int a = 0; a < 3; ++a) set.centre[a] = float(src.readF64());
+        set.inverseScale = float(src.readF64());
+    }
+    std::vector<float> values = readFloatPlanes(src, samples * K * terms, "values");
     src.finish();
-    sidecar::checkHarmonics(values, samples, K, src.context());
-    return values;
+    transfer.harmonicSet = set;
+    transfer.harmonics = std::move(values);
+    sidecar::checkHarmonics(transfer, samples, src.context());
 }
 
 // A u32 chunk holding one of `names` (value v is names[v]); anything else is refused
@@ -211,7 +221,12 @@ SidecarHeader readSidecar(const std::filesystem::path& path, TranslucentAsset& a
     if (file.find(kFresnelBasis)) p.environment.fresnelBasis = readFresnelBasis(file.open(kFresnelBasis));
     if (file.find(kSelfTerm)) p.transfer.selfTerm = readSelfTerm(file.open(kSelfTerm));
     if (file.find(kEnvironmentKind)) p.environment.kind = readEnvironmentKind(file.open(kEnvironmentKind));
-    if (file.find(kHarmonics)) p.transfer.harmonics = readHarmonics(file.open(kHarmonics), samples, header.basisCount);
+    if (file.find(kHarmonics) && file.find(kPositionHarmonics))
+        throw Error(path.string() + ": holds both harmonic transfers (chunks 'HARM' and 'HARP'); write the file again");
+    if (file.find(kHarmonics))
+        readHarmonics(file.open(kHarmonics), samples, header.basisCount, kNormalHarmonics, p.transfer);
+    if (file.find(kPositionHarmonics))
+        readHarmonics(file.open(kPositionHarmonics), samples, header.basisCount, kMaxHarmonics, p.transfer);
     asset.layout = p.layout;
     asset.samples = std::move(p.samples);
     asset.vertexWeights = std::move(p.vertexWeights);

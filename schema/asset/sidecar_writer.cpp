@@ -15,6 +15,10 @@ std::string writeContext(const std::filesystem::path& path, ChunkTag tag) {
     return chunkContext(path, tag) + " (not written)";
 }
 
+ChunkTag harmonicsChunk(const CompressedTransfer& t) {
+    return t.harmonicSet.count == kNormalHarmonics ? kHarmonics : kPositionHarmonics;
+}
+
 void validate(const std::filesystem::path& path, const TranslucentAsset& a) {
     sidecar::checkName(a.name, writeContext(path, kHeader));
     sidecar::checkUnitsPerMm(a.unitsPerMm, writeContext(path, kHeader));
@@ -23,7 +27,7 @@ void validate(const std::filesystem::path& path, const TranslucentAsset& a) {
     sidecar::checkSamples(a.samples, samples, writeContext(path, kSamples));
     sidecar::checkVertexWeights(a.vertexWeights, samples, writeContext(path, kVertexWeights));
     sidecar::checkTransfer(a.transfer, samples, writeContext(path, kTransfer));
-    sidecar::checkHarmonics(a.transfer.harmonics, samples, a.transfer.perBasis.size(), writeContext(path, kHarmonics));
+    sidecar::checkHarmonics(a.transfer, samples, writeContext(path, harmonicsChunk(a.transfer)));
     sidecar::checkEnvironment(a.environment, samples, writeContext(path, kEnvironment));
 }
 
@@ -87,10 +91,15 @@ void writeTransfer(ChunkSink& sink, const CompressedTransfer& t, const ChartLayo
     for (std::size_t k = 0; k < t.perBasis.size(); ++k) writeMatrix(sink, t.perBasis[k], t.valueStep(k), grid);
 }
 
+// HARM (9 functions) or HARP (36, with the set's frame).
 void writeHarmonics(ChunkSink& sink, const CompressedTransfer& t, std::uint64_t samples) {
-    sink.writeU32(std::uint32_t(kNormalHarmonics));
+    sink.writeU32(t.harmonicSet.count);
     sink.writeU32(std::uint32_t(t.perBasis.size()));
     sink.writeU64(samples);
+    if (t.harmonicSet.count != kNormalHarmonics) {
+        for (int a = 0; a < 3; ++a) sink.writeF64(t.harmonicSet.centre[a]);
+        sink.writeF64(t.harmonicSet.inverseScale);
+    }
     writeFloatPlanes(sink, t.harmonics);
 }
 
@@ -130,8 +139,8 @@ void writeSidecar(const std::filesystem::path& path, const TranslucentAsset& a,
     if (a.environment.kind != EnvironmentVectorKind::Visible)  // required: see sidecar.h
         all.push_back({kEnvironmentKind, ChunkCodec::Raw, true,
                        [&](ChunkSink& s) { s.writeU32(std::uint32_t(a.environment.kind)); }});
-    if (!a.transfer.harmonics.empty())  // optional: readers older than 2.5 skip it
-        all.push_back({kHarmonics, ChunkCodec::Zstd, false,
+    if (!a.transfer.harmonics.empty())  // optional: readers older than 2.5 (HARM) or 2.6 (HARP) skip it
+        all.push_back({harmonicsChunk(a.transfer), ChunkCodec::Zstd, false,
                        [&](ChunkSink& s) { writeHarmonics(s, a.transfer, a.layout.cells()); }});
     writeChunkedFile(path, kSidecarKind, all, {options.zstdLevel});
 }

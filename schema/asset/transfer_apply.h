@@ -4,8 +4,8 @@
 //   y_k = (w1 T_k w0^-1) wE    one sparse product per basis function
 //   L   = w1^-1 (sum_k s_k y_k) CDF 9/7 inverse, per chart
 // (L still lacks the (1/pi) F_t(eta, w_o) factor, applied per pixel.) With the exact
-// harmonic transfer (normal_harmonics.h), E is first split into sum_q a_q Y_q and a
-// residual R, and y_k = (w1 T_k w0^-1) (w0 R) + w1 sum_q a_q (T_k Y_q).
+// harmonic transfer (normal_harmonics.h), E is first split into sum_q a_q f_q and a
+// residual R, and y_k = (w1 T_k w0^-1) (w0 R) + w1 sum_q a_q (T_k f_q).
 #pragma once
 
 #include "schema/asset/translucent_asset.h"

@@ -54,6 +54,17 @@ struct VertexWeights {
 // the current material's exact dipole disk reflectance (self_term.h).
 enum class SelfTerm : std::uint32_t { InTransfer = 0, AtRunTime = 1 };
 
+// The functions whose exact transfer CompressedTransfer::harmonics holds
+// (schema/asset/normal_harmonics.h, docs/ARCHITECTURE.md#harmonic-transfer): the nine
+// normal harmonics Y_q(n) (count 9, sidecars 2.5), or those times each of (1, x', y', z'),
+// x' = (x - centre) inverseScale the sample position in the set's frame (count 36, from
+// 2.6). The frame only conditions the fit: the 36 span the same space in any frame.
+struct HarmonicSet {
+    std::uint32_t count = 36;
+    Imath::V3f centre{0.0f, 0.0f, 0.0f};  // scene units
+    float inverseScale = 1.0f;            // 1 / scene units
+};
+
 struct CompressedTransfer {
     std::vector<SparseMatrix> perBasis;  // K
     // Per matrix, the step of the grid its values are stored on (transfer_value_grid.h);
@@ -62,11 +73,12 @@ struct CompressedTransfer {
     double keepFraction = 0.01;          // step 1
     double energyFraction = 0.99998;     // step 2
     SelfTerm selfTerm = SelfTerm::InTransfer;
-    // T_k Y_q, lossless (schema/asset/normal_harmonics.h): harmonics[(o * K + k) * 9 + q] =
-    // sum_{i != o} T_k[o][i] Y_q(n_i), one per output o (grid order), basis function k and
-    // normal harmonic q. Empty: not baked (sidecars before 2.5); the matrices then carry
-    // all of the light.
+    // T_k f_q, lossless (schema/asset/normal_harmonics.h): harmonics[(o * K + k) * Q + q] =
+    // sum_{i != o} T_k[o][i] f_q(x_i, n_i), one per output o (grid order), basis function k
+    // and function q < Q = harmonicSet.count. Empty: not baked (sidecars before 2.5); the
+    // matrices then carry all of the light.
     std::vector<float> harmonics;
+    HarmonicSet harmonicSet;  // what `harmonics` is the transfer of
 
     double valueStep(std::size_t k) const { return k < valueSteps.size() ? valueSteps[k] : 0.0; }
 };

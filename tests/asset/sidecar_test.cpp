@@ -57,6 +57,11 @@ void expectSameSidecarParts(const TranslucentAsset& a, const TranslucentAsset& b
         EXPECT_EQ(bits(x.values), bits(y.values));
     }
     EXPECT_EQ(bits(a.transfer.harmonics), bits(b.transfer.harmonics));
+    if (!a.transfer.harmonics.empty()) {
+        EXPECT_EQ(a.transfer.harmonicSet.count, b.transfer.harmonicSet.count);
+        EXPECT_EQ(a.transfer.harmonicSet.centre, b.transfer.harmonicSet.centre);
+        EXPECT_EQ(a.transfer.harmonicSet.inverseScale, b.transfer.harmonicSet.inverseScale);
+    }
     EXPECT_EQ(a.environment.cubeFaceSize, b.environment.cubeFaceSize);
     EXPECT_EQ(a.environment.fresnelTerms, b.environment.fresnelTerms);
     EXPECT_EQ(a.environment.offsets, b.environment.offsets);
@@ -232,45 +237,82 @@ TEST(Sidecar, EnvironmentVectorKindRoundTripsAndDefaultsToVisible) {
         "unknown environment vector kind");
 }
 
-// The exact transfer of the normal harmonics (chunk HARM, 2.5): optional, so that a
-// reader before 2.5 renders from the matrices alone; absent means none.
+// The exact harmonic transfer: chunk HARM (2.5) for the nine normal harmonics, HARP (2.6)
+// for the 36 functions with their frame. Both optional, so that an older reader renders
+// from the matrices alone; absent means none.
 TEST(Sidecar, HarmonicTransferRoundTripsAndIsOptional) {
     TempDir dir;
     TranslucentAsset original = test::syntheticAsset();
     roundToStoredPrecision(original);
-    const std::size_t values = original.samples.size() * original.transfer.perBasis.size() * kNormalHarmonics;
-    for (std::size_t i = 0; i < values; ++i) original.transfer.harmonics.push_back(std::sin(float(i)) * 1e-3f);
-    writeSidecar(dir / "harm.opal", original);
-    const ChunkedFileReader file(dir / "harm.opal", kSidecarKind);
-    ASSERT_TRUE(file.find(sidecar_chunk::kHarmonics));
-    EXPECT_FALSE(file.find(sidecar_chunk::kHarmonics)->required);
+    for (const std::uint32_t Q : {9u, 36u}) {
+        SCOPED_TRACE(Q);
+        const ChunkTag tag = Q == 9 ? sidecar_chunk::kHarmonics : sidecar_chunk::kPositionHarmonics;
+        const char* name = Q == 9 ? "HARM" : "HARP";
+        original.transfer.harmonicSet = {Q, Imath::V3f(0.25f, -1.5f, 3.0f), 0.125f};
+        const std::size_t values = original.samples.size() * original.transfer.perBasis.size() * Q;
+        original.transfer.harmonics.clear();
+        for (std::size_t i = 0; i < values; ++i) original.transfer.harmonics.push_back(std::sin(float(i)) * 1e-3f);
+        writeSidecar(dir / "harm.opal", original);
+        const ChunkedFileReader file(dir / "harm.opal", kSidecarKind);
+        ASSERT_TRUE(file.find(tag));
+        EXPECT_FALSE(file.find(tag)->required);
+        EXPECT_FALSE(file.find(Q == 9 ? sidecar_chunk::kPositionHarmonics : sidecar_chunk::kHarmonics));
+        TranslucentAsset loaded;
+        readSidecar(dir / "harm.opal", loaded);
+        if (Q == 9) original.transfer.harmonicSet = {9};  // HARM has no frame
+        expectSameSidecarParts(original, loaded);
+
+        const std::vector<float> kept = original.transfer.harmonics;
+        original.transfer.harmonics.clear();
+        writeSidecar(dir / "none.opal", original);
+        EXPECT_FALSE(ChunkedFileReader(dir / "none.opal", kSidecarKind).find(tag));
+        readSidecar(dir / "none.opal", loaded);
+        EXPECT_TRUE(loaded.transfer.harmonics.empty());
+
+        original.transfer.harmonics.assign(values - 1, 0.0f);
+        expectContains(errorOf([&] { writeSidecar(dir / "short.opal", original); }),
+                       {"short.opal", name, "expected samples x K x " + std::to_string(Q) + " = " + std::to_string(values)});
+        original.transfer.harmonics.assign(values, 0.0f);
+        original.transfer.harmonics[7] = std::nanf("");
+        expectContains(errorOf([&] { writeSidecar(dir / "nan.opal", original); }),
+                       {"nan.opal", name, "harmonic transfer values[7] = nan is not finite"});
+        EXPECT_FALSE(std::filesystem::exists(dir / "nan.opal"));
+
+        // A damaged chunk is refused on reading, naming it: the count's K disagrees with HEAD.
+        original.transfer.harmonics = kept;
+        writeSidecar(dir / "bad.opal", original);
+        std::vector<RawChunk> chunks = rawChunks(dir / "bad.opal");
+        putBytes(chunk(chunks, tag).bytes, 4, 4);
+        writeRawChunks(dir / "bad.opal", chunks);
+        const std::string q = std::to_string(Q);
+        expectContains(errorOf([&] { readSidecar(dir / "bad.opal", loaded); }),
+                       {"bad.opal", name, "32 samples x K = 4 x " + q + " harmonics, expected 32 x 3 x " + q});
+    }
+    // The 36 need a usable frame.
+    original.transfer.harmonicSet.inverseScale = 0.0f;
+    expectContains(errorOf([&] { writeSidecar(dir / "frame.opal", original); }),
+                   {"frame.opal", "HARP", "frame (centre and inverse scale) is not finite with a positive scale"});
+    original.transfer.harmonicSet = {12};
+    expectContains(errorOf([&] { writeSidecar(dir / "count.opal", original); }),
+                   {"count.opal", "a harmonic set of 12 functions, expected 9 or 36"});
+}
+
+// A file holding both harmonic transfers is refused, naming the two chunks.
+TEST(Sidecar, BothHarmonicTransfersAreRefused) {
+    TempDir dir;
+    TranslucentAsset a = test::syntheticAsset();
+    a.transfer.harmonicSet = {9};
+    a.transfer.harmonics.assign(a.samples.size() * a.transfer.perBasis.size() * 9, 0.25f);
+    writeSidecar(dir / "nine.opal", a);
+    a.transfer.harmonicSet = {36};
+    a.transfer.harmonics.assign(a.samples.size() * a.transfer.perBasis.size() * 36, 0.25f);
+    writeSidecar(dir / "both.opal", a);
+    std::vector<RawChunk> chunks = rawChunks(dir / "both.opal");
+    std::vector<RawChunk> nine = rawChunks(dir / "nine.opal");
+    chunks.push_back(chunk(nine, sidecar_chunk::kHarmonics));
+    writeRawChunks(dir / "both.opal", chunks);
     TranslucentAsset loaded;
-    readSidecar(dir / "harm.opal", loaded);
-    expectSameSidecarParts(original, loaded);
-
-    original.transfer.harmonics.clear();
-    writeSidecar(dir / "none.opal", original);
-    EXPECT_FALSE(ChunkedFileReader(dir / "none.opal", kSidecarKind).find(sidecar_chunk::kHarmonics));
-    readSidecar(dir / "none.opal", loaded);
-    EXPECT_TRUE(loaded.transfer.harmonics.empty());
-
-    original.transfer.harmonics.assign(values - 1, 0.0f);
-    expectContains(errorOf([&] { writeSidecar(dir / "short.opal", original); }),
-                   {"short.opal", "HARM", "expected samples x K x 9 = " + std::to_string(values)});
-    original.transfer.harmonics.assign(values, 0.0f);
-    original.transfer.harmonics[7] = std::nanf("");
-    expectContains(errorOf([&] { writeSidecar(dir / "nan.opal", original); }),
-                   {"nan.opal", "HARM", "harmonic transfer values[7] = nan is not finite"});
-    EXPECT_FALSE(std::filesystem::exists(dir / "nan.opal"));
-
-    // A damaged chunk is refused on reading, naming it: the count's K disagrees with HEAD.
-    original.transfer.harmonics.assign(values, 0.5f);
-    writeSidecar(dir / "bad.opal", original);
-    std::vector<RawChunk> chunks = rawChunks(dir / "bad.opal");
-    putBytes(chunk(chunks, sidecar_chunk::kHarmonics).bytes, 4, 4);
-    writeRawChunks(dir / "bad.opal", chunks);
-    expectContains(errorOf([&] { readSidecar(dir / "bad.opal", loaded); }),
-                   {"bad.opal", "HARM", "32 samples x K = 4 x 9 harmonics, expected 32 x 3 x 9"});
+    expectContains(errorOf([&] { readSidecar(dir / "both.opal", loaded); }), {"both.opal", "'HARM' and 'HARP'"});
 }
 
 TEST(Sidecar, TwoWritesAreByteIdentical) {

@@ -208,21 +208,32 @@ TEST_F(ExactCandle, KeepingEverythingReproducesTheExactGatherPerBasisFunction) {
     EXPECT_LE(report_->transferRelRmse, 1e-5);
 }
 
-// The harmonic transfer is T_k Y_q with nothing dropped: the exact gather (double sums over
-// every pair) of each normal harmonic as the light.
+// The harmonic transfer is T_k f_q with nothing dropped: the exact gather (double sums over
+// every pair) of each function of the bake's set (36: the normal harmonics times the
+// position in the samples' frame) as the light.
 TEST_F(ExactCandle, HarmonicTransferIsTheExactGatherOfEachHarmonic) {
     const TranslucentAsset& a = *asset_;
     const std::size_t n = a.samples.size(), K = std::size_t(a.basis.K());
-    ASSERT_EQ(a.transfer.harmonics.size(), n * K * kNormalHarmonics);
-    for (std::size_t q = 0; q < kNormalHarmonics; ++q) {
+    const HarmonicSet& set = a.transfer.harmonicSet;
+    ASSERT_EQ(set.count, kMaxHarmonics);
+    const HarmonicSet expected = harmonicSetFor(a.samples);
+    EXPECT_EQ(set.centre, expected.centre);
+    EXPECT_EQ(set.inverseScale, expected.inverseScale);
+    const std::size_t Q = set.count;
+    ASSERT_EQ(a.transfer.harmonics.size(), n * K * Q);
+    std::vector<float> f(Q);
+    for (std::size_t q = 0; q < Q; ++q) {
         std::vector<float> light(n);
-        for (std::size_t i = 0; i < n; ++i) light[i] = normalHarmonics(a.samples[i].normal)[q];
+        for (std::size_t i = 0; i < n; ++i) {
+            harmonicValues(set, a.samples[i], f);
+            light[i] = f[q];
+        }
         const std::vector<std::vector<double>> exact = exactGather(a, light);
         for (std::size_t k = 0; k < K; ++k) {
             double peak = 0.0, worst = 0.0;
             for (std::size_t o = 0; o < n; ++o) {
                 peak = std::max(peak, std::abs(exact[k][o]));
-                worst = std::max(worst, std::abs(a.transfer.harmonics[(o * K + k) * kNormalHarmonics + q] - exact[k][o]));
+                worst = std::max(worst, std::abs(a.transfer.harmonics[(o * K + k) * Q + q] - exact[k][o]));
             }
             ASSERT_GT(peak, 0.0) << "k = " << k << ", q = " << q;
             EXPECT_LE(worst, 1e-5 * peak) << "k = " << k << ", q = " << q;
@@ -540,8 +551,11 @@ TEST(BakePipeline, WrittenAssetReadsBackBitExact) {
     }
     EXPECT_EQ(b.transfer.keepFraction, a.transfer.keepFraction);
     EXPECT_EQ(b.transfer.energyFraction, a.transfer.energyFraction);
-    ASSERT_EQ(a.transfer.harmonics.size(), a.samples.size() * a.transfer.perBasis.size() * kNormalHarmonics);
+    ASSERT_EQ(a.transfer.harmonics.size(), a.samples.size() * a.transfer.perBasis.size() * kMaxHarmonics);
     EXPECT_TRUE(sameBits(b.transfer.harmonics, a.transfer.harmonics));
+    EXPECT_EQ(b.transfer.harmonicSet.count, a.transfer.harmonicSet.count);
+    EXPECT_EQ(b.transfer.harmonicSet.centre, a.transfer.harmonicSet.centre);
+    EXPECT_EQ(b.transfer.harmonicSet.inverseScale, a.transfer.harmonicSet.inverseScale);
     EXPECT_EQ(b.environment.cubeFaceSize, a.environment.cubeFaceSize);
     EXPECT_EQ(b.environment.fresnelTerms, a.environment.fresnelTerms);
     EXPECT_EQ(b.environment.offsets, a.environment.offsets);
