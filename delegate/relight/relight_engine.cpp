@@ -231,34 +231,10 @@ void RelightEngine::weighSmooth(std::size_t p) {
         }
 }
 
-namespace {
-
-using Float16Lanes = float __attribute__((vector_size(16 * sizeof(float))));
-
-// addSmooth for 16 k at a time (K = 16, the default basis): each u_q read once, the three
-// channels' sums held in registers. Measured on the 65,536-sample bunny with the 36
-// functions (opal-bench relight, light move): addSmooth was XX ms four k at a time.
-__attribute__((target_clones("avx512f", "avx2", "default"))) void addSmooth16(
-    const float (&alpha)[3][kMaxHarmonics], std::size_t Q, const float* u, float* z) {
-    Float16Lanes sum[3];
-    std::memcpy(sum, z, sizeof(sum));
-    for (std::size_t q = 0; q < Q; ++q) {
-        Float16Lanes uq;
-        std::memcpy(&uq, u + q * 16, sizeof(uq));
-        sum[0] += alpha[0][q] * uq;
-        sum[1] += alpha[1][q] * uq;
-        sum[2] += alpha[2][q] * uq;
-    }
-    std::memcpy(z, sum, sizeof(sum));
-}
-
-}  // namespace
-
-// z[ch][k] += sum_q alpha[ch][q] w1 U_{k,q}(p) (the padding stays zero).
+// z[ch][k] += sum_q alpha[ch][q] w1 U_{k,q}(p), four k at a time (the padding stays zero).
 void RelightEngine::addSmooth(const float (&alpha)[3][kMaxHarmonics], std::size_t p, float* z) const {
     const std::size_t Q = harmonics_->count();
     const float* u = smooth_.data() + p * Q * paddedK_;
-    if (paddedK_ == 16) return addSmooth16(alpha, Q, u, z);
     for (std::size_t ch = 0; ch < 3; ++ch)
         for (std::size_t k = 0; k < paddedK_; k += 4) {
             Float4 sum = load4(z + ch * paddedK_ + k);
