@@ -51,6 +51,9 @@ StreamedBytes streamedBytes(const TranslucentAsset& asset, int width, int height
     const double weights = double(asset.vertexWeights.samples.size());
     bytes.material = 4.0 * n * 3.0 * 4.0 * std::ceil(K / 4.0) + 4.0 * n * 3.0 +
                      weights * (sizeof(std::uint32_t) + sizeof(float)) + 4.0 * vertices * 3.0;
+    bytes.materialAfterLight = bytes.material;
+    if (!asset.transfer.harmonics.empty())
+        bytes.materialAfterLight += 4.0 * n * double(asset.transfer.harmonicSet.count) * 4.0 * std::ceil(K / 4.0);
     double channels = 0.0;
     for (const hd::AovDescriptor& aov : hd::aovTable()) channels += double(aov.channels.size());
     bytes.pass = 2.0 * 4.0 * channels * double(width) * double(height);

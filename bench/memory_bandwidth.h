@@ -27,6 +27,9 @@ double triadBandwidth(std::size_t elements = std::size_t(1) << 24, int repeats =
 //                as float
 struct StreamedBytes {
     double light = 0.0, environment = 0.0, material = 0.0, pass = 0.0;
+    // The first material edit after a light edit: material, and w1 U read once (samples x Q
+    // x K floats) to fold the smooth part into z_k (RelightEngine::smoothPass).
+    double materialAfterLight = 0.0;
 };
 
 StreamedBytes streamedBytes(const TranslucentAsset& asset, int width, int height);

@@ -241,6 +241,27 @@ CaseResult materialCase(Session& s, int repeats) {
     return r;
 }
 
+// A material edit right after a light move (the move synced, not timed): an artist who
+// stops dragging a light and takes a slider. With the harmonic transfer this edit reads w1
+// U once to fold the smooth part into z_k (RelightEngine::smoothPass); the `material` case
+// times the edits after it.
+CaseResult materialAfterLightCase(Session& s, int repeats) {
+    CaseResult r = newCase("material_after_light",
+                           "point light moved and synced, then material prim edit -> RenderIndex::sync()", kMaterialMs);
+    for (int i = 0; i <= repeats; ++i) {
+        s.scene.moveKeyLight(s.index, i + 1);
+        s.index.sync();
+        const CommitStats before = s.delegate.totals();
+        s.scene.setMaterial(s.index, materialOfEdit(i));
+        if (i == 0)
+            s.index.sync();
+        else
+            recordSync(s, r);
+        checkWork(r, before, s.delegate.totals(), {0, 0, 1});
+    }
+    return r;
+}
+
 CaseResult lightCase(Session& s, int repeats) {
     CaseResult r = newCase("light", "point light moved -> RenderIndex::sync()", kLightMs, kLightSpeedup);
     runEdits(s, r, repeats, [&](int i) { s.scene.moveKeyLight(s.index, i + 1); }, {1, 1, 0});
@@ -385,6 +406,10 @@ void runReference(Session& s, const std::shared_ptr<const TranslucentAsset>& ass
         if (imageCase(c.name)) {
             c.referenceNote = "n/a: opal:reference forms the image with the same renderer; only the per-vertex "
                               "radiance differs, which the edit cases time";
+            continue;
+        }
+        if (c.name == "material_after_light") {
+            c.referenceNote = "the material case's: the same edit, the same exact gather";
             continue;
         }
         if (c.name == "material") c.reference = reference->materialEdit(materialOfEdit(repeats + 1));
@@ -569,6 +594,7 @@ void setStreamedBytes(std::vector<CaseResult>& cases, const TranslucentAsset& as
     const StreamedBytes bytes = streamedBytes(asset, kWidth, kHeight);
     for (CaseResult& c : cases) {
         if (c.name == "material") c.streamedBytes = bytes.material;
+        if (c.name == "material_after_light") c.streamedBytes = bytes.materialAfterLight;
         if (c.name == "light") c.streamedBytes = bytes.light;
         if (c.name == "environment") c.streamedBytes = bytes.environment;
         if (c.name == "frame") c.streamedBytes = bytes.pass;
@@ -721,6 +747,8 @@ int run(const Options& options) {
     std::vector<CaseResult> cases;
     if (options.runs("material")) cases.push_back(materialCase(session, options.repeats));
     if (options.runs("light")) cases.push_back(lightCase(session, options.repeats));
+    if (options.runs("material") && options.runs("light"))
+        cases.push_back(materialAfterLightCase(session, options.repeats));
     if (options.runs("environment") && domeMap) cases.push_back(environmentCase(session, options.repeats));
     if (options.runs("frame")) {
         FrameOutput frame;

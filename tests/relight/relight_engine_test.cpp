@@ -120,30 +120,30 @@ TEST(RelightEngine, MaterialEditsEqualAFullRecompute) {
     }
 }
 
-// A sphere of 384 samples with the lossless transfer and the 36-function harmonic transfer
-// computed from the same dense T_k: U_{k,q}[o] = sum_i T_k[o][i] f_q(x_i, n_i).
-std::shared_ptr<TranslucentAsset> sphereWithHarmonics() {
+// A sphere of 384 samples with K basis functions, the lossless transfer and the 36-function
+// harmonic transfer computed from the same dense T_k: U_{k,q}[o] = sum_i T_k[o][i] f_q(x_i, n_i).
+std::shared_ptr<TranslucentAsset> sphereWithHarmonics(int K) {
     auto asset = std::make_shared<TranslucentAsset>();
     asset->name = "sphere";
     test::makeCubeSphere(*asset, 3, 5.0f);
     asset->defaultMaterial = Material{{1.0, 0.8, 0.6}, {0.05, 0.1, 0.2}, 1.3};
     asset->range = test::rangeAround(asset->defaultMaterial, 3.0, 1.2, 1.6);
-    asset->basis = test::fitBasis(asset->range, 8, 12.0);
+    asset->basis = test::fitBasis(asset->range, K, 12.0);
     test::buildTransfer(*asset, 1.0, 1.0, SelfTerm::AtRunTime);
-    const std::size_t n = asset->samples.size(), K = std::size_t(asset->basis.K());
+    const std::size_t n = asset->samples.size();
     HarmonicSet& set = asset->transfer.harmonicSet;
     set = harmonicSetFor(asset->samples);
     std::vector<float> f(n * set.count);
     for (std::size_t i = 0; i < n; ++i)
         harmonicValues(set, asset->samples[i], std::span<float>(f).subspan(i * set.count, set.count));
-    asset->transfer.harmonics.assign(n * K * set.count, 0.0f);
-    for (std::size_t k = 0; k < K; ++k) {
-        const std::vector<double> t = test::denseTransfer(*asset, int(k), SelfTerm::AtRunTime);
+    asset->transfer.harmonics.assign(n * std::size_t(K) * set.count, 0.0f);
+    for (int k = 0; k < K; ++k) {
+        const std::vector<double> t = test::denseTransfer(*asset, k, SelfTerm::AtRunTime);
         for (std::size_t o = 0; o < n; ++o)
             for (std::size_t q = 0; q < set.count; ++q) {
                 double sum = 0.0;
                 for (std::size_t i = 0; i < n; ++i) sum += t[o * n + i] * f[i * set.count + q];
-                asset->transfer.harmonics[(o * K + k) * set.count + q] = float(sum);
+                asset->transfer.harmonics[(o * std::size_t(K) + std::size_t(k)) * set.count + q] = float(sum);
             }
     }
     for (std::size_t v = 0; v < asset->mesh.points.size(); ++v) {
@@ -158,9 +158,10 @@ std::shared_ptr<TranslucentAsset> sphereWithHarmonics() {
 // The smooth part of E reaches L one of two ways (RelightEngine::weighProducts): folded into
 // z_k after a material edit, or through G = sum_k s_k w1 U_k after a light or eta change,
 // G kept while the material stays. Any sequence of edits gives a fresh engine's radiance,
-// and the direct dense sum.
-TEST(RelightEngine, SmoothPartThroughAnySequenceOfEditsEqualsAFullRecompute) {
-    const auto asset = sphereWithHarmonics();
+// and the direct dense sum. K = 8 and K = 16 (the default, whose fold runs 16 k at a time).
+void expectSmoothPartThroughAnySequenceOfEdits(int K) {
+    SCOPED_TRACE(K);
+    const auto asset = sphereWithHarmonics(K);
     const auto n = std::uint32_t(asset->samples.size());
     const IrradianceMoments lights[] = {test::randomMoments(n, 2, 5), test::randomMoments(n, 2, 6),
                                         test::randomMoments(n, 2, 7)};
@@ -186,6 +187,11 @@ TEST(RelightEngine, SmoothPartThroughAnySequenceOfEditsEqualsAFullRecompute) {
         EXPECT_LT(test::maxRelative(edited.sampleRadiance(), directRadiance(*asset, materials[m], lights[l])),
                   kHalfProduct);
     }
+}
+
+TEST(RelightEngine, SmoothPartThroughAnySequenceOfEditsEqualsAFullRecompute) {
+    expectSmoothPartThroughAnySequenceOfEdits(8);
+    expectSmoothPartThroughAnySequenceOfEdits(16);
 }
 
 // The self term left to run time is the dipole's exact disk reflectance of the current
