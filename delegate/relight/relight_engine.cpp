@@ -205,7 +205,7 @@ void RelightEngine::weighProducts(bool reweigh, SmoothPass pass, std::size_t beg
         }
         if (pass == SmoothPass::Fold) addSmooth(alpha, p, z);
         if (pass == SmoothPass::RefreshByFunction) weighSmooth(p);
-        const float* g = smoothByFunction_.data() + p * 3 * paddedQ;
+        const float* g = byFunction ? smoothByFunction_.data() + p * 3 * paddedQ : nullptr;
         for (std::size_t ch = 0; ch < 3; ++ch) {
             Float4 sum = {};
             for (std::size_t k = 0; k < paddedK_; k += 4)
