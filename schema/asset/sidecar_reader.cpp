@@ -3,11 +3,11 @@
 #include "schema/asset/array_codec.h"
 #include "schema/asset/chunked_file.h"
 #include "schema/asset/normal_harmonics.h"
-#include "schema/error.h"
 #include "schema/asset/point_range.h"
 #include "schema/asset/sidecar.h"
 #include "schema/asset/sidecar_checks.h"
 #include "schema/asset/transfer_value_grid.h"
+#include "schema/error.h"
 
 #include <initializer_list>
 #include <string>
