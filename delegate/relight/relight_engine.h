@@ -106,7 +106,7 @@ private:
     std::vector<float> haar_;        // wE_m = w0 E_m: samples x (3 terms, padded to 4 lanes)
     std::vector<float> input_;       // wE_m in the product's input order (arrangeInput)
     std::vector<float> products_;    // y: samples x K x (3 terms)
-    std::optional<HarmonicFit> harmonics_;  // the split of E, when the asset has T_k Y_q
+    std::optional<HarmonicFit> harmonics_;  // the split of E, when the asset has T_k f_q
     std::vector<float> smooth_;      // w1 U_{k,q} = w1 (T_k f_q): samples x Q x paddedK (9/7 domain)
     std::vector<float> smoothFit_;   // a_{q,m}: Q x (3 terms), from the last setIrradiance
     // G_q = sum_k (s_k / pi) w1 U_{k,q}: samples x 3 x Q padded to 4 (weighProducts)
