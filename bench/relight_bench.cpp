@@ -210,10 +210,15 @@ void checkWork(const CaseResult& result, const CommitStats& before, const Commit
                 " material updates)");
 }
 
-// Runs edit(i) + sync for i = 0 (warm-up, untimed) .. repeats.
+// Runs edit(i) + sync for i = 0 (warm-up, untimed) .. repeats; before each, prepare(i) +
+// sync untimed when given.
 void runEdits(Session& s, CaseResult& result, int repeats, const std::function<void(int)>& edit,
-              ExpectedWork expected) {
+              ExpectedWork expected, const std::function<void(int)>& prepare = {}) {
     for (int i = 0; i <= repeats; ++i) {
+        if (prepare) {
+            prepare(i);
+            s.index.sync();
+        }
         const CommitStats before = s.delegate.totals();
         edit(i);
         if (i == 0)
@@ -248,17 +253,8 @@ CaseResult materialCase(Session& s, int repeats) {
 CaseResult materialAfterLightCase(Session& s, int repeats) {
     CaseResult r = newCase("material_after_light",
                            "point light moved and synced, then material prim edit -> RenderIndex::sync()", kMaterialMs);
-    for (int i = 0; i <= repeats; ++i) {
-        s.scene.moveKeyLight(s.index, i + 1);
-        s.index.sync();
-        const CommitStats before = s.delegate.totals();
-        s.scene.setMaterial(s.index, materialOfEdit(i));
-        if (i == 0)
-            s.index.sync();
-        else
-            recordSync(s, r);
-        checkWork(r, before, s.delegate.totals(), {0, 0, 1});
-    }
+    runEdits(s, r, repeats, [&](int i) { s.scene.setMaterial(s.index, materialOfEdit(i)); }, {0, 0, 1},
+             [&](int i) { s.scene.moveKeyLight(s.index, i + 1); });
     return r;
 }
 

@@ -107,6 +107,7 @@ RelightEngine::RelightEngine(std::shared_ptr<const TranslucentAsset> asset)
         // w1 U_{k,q}: the 9/7 transform over outputs, then laid out [p][q][paddedK] for the
         // weighing's K-wide lanes.
         const std::size_t Q = harmonics_->count();
+        paddedQ_ = (Q + 3) / 4 * 4;
         std::vector<float> w1U = asset_->transfer.harmonics;
         cdf97ForwardCharts(std::span<float>(w1U), asset_->layout, std::uint32_t(K_ * Q));
         smooth_.assign(samples_ * Q * paddedK_, 0.0f);
@@ -185,7 +186,7 @@ void RelightEngine::weighProducts(bool reweigh, SmoothPass pass, std::size_t beg
     const std::size_t terms = moments_.terms, C = 3 * terms;
     float c[kMaxFresnelTerms];
     for (std::size_t m = 0; m < terms; ++m) c[m] = float(fresnel_[m]);
-    const std::size_t Q = harmonics_ ? harmonics_->count() : 0, paddedQ = (Q + 3) / 4 * 4;
+    const std::size_t Q = harmonics_ ? harmonics_->count() : 0;
     float alpha[3][kMaxHarmonics] = {};  // zero beyond Q: the padding of G
     if (pass != SmoothPass::None)
         for (std::size_t ch = 0; ch < 3; ++ch)
@@ -205,13 +206,13 @@ void RelightEngine::weighProducts(bool reweigh, SmoothPass pass, std::size_t beg
         }
         if (pass == SmoothPass::Fold) addSmooth(alpha, p, z);
         if (pass == SmoothPass::RefreshByFunction) weighSmooth(p);
-        const float* g = byFunction ? smoothByFunction_.data() + p * 3 * paddedQ : nullptr;
+        const float* g = byFunction ? smoothByFunction_.data() + p * 3 * paddedQ_ : nullptr;
         for (std::size_t ch = 0; ch < 3; ++ch) {
             Float4 sum = {};
             for (std::size_t k = 0; k < paddedK_; k += 4)
                 sum += load4(profile_.data() + ch * paddedK_ + k) * load4(z + ch * paddedK_ + k);
             if (byFunction)
-                for (std::size_t q = 0; q < paddedQ; q += 4) sum += load4(alpha[ch] + q) * load4(g + ch * paddedQ + q);
+                for (std::size_t q = 0; q < paddedQ_; q += 4) sum += load4(alpha[ch] + q) * load4(g + ch * paddedQ_ + q);
             radiance_[p * 3 + ch] = (sum[0] + sum[1]) + (sum[2] + sum[3]);
         }
     }
@@ -219,15 +220,15 @@ void RelightEngine::weighProducts(bool reweigh, SmoothPass pass, std::size_t beg
 
 // G_q(p) = sum_k (s_k / pi) w1 U_{k,q}(p) per channel, Q padded to whole registers.
 void RelightEngine::weighSmooth(std::size_t p) {
-    const std::size_t Q = harmonics_->count(), paddedQ = (Q + 3) / 4 * 4;
+    const std::size_t Q = harmonics_->count();
     const float* u = smooth_.data() + p * Q * paddedK_;
-    float* g = smoothByFunction_.data() + p * 3 * paddedQ;
+    float* g = smoothByFunction_.data() + p * 3 * paddedQ_;
     for (std::size_t ch = 0; ch < 3; ++ch)
         for (std::size_t q = 0; q < Q; ++q) {
             Float4 sum = {};
             for (std::size_t k = 0; k < paddedK_; k += 4)
                 sum += load4(profile_.data() + ch * paddedK_ + k) * load4(u + q * paddedK_ + k);
-            g[ch * paddedQ + q] = (sum[0] + sum[1]) + (sum[2] + sum[3]);
+            g[ch * paddedQ_ + q] = (sum[0] + sum[1]) + (sum[2] + sum[3]);
         }
 }
 
@@ -291,8 +292,7 @@ void RelightEngine::formRadiance(bool reweigh) {
     radiance_.resize(samples_ * 3);
     weighted_.resize(samples_ * 3 * paddedK_);
     const SmoothPass pass = smoothPass(reweigh);
-    if (pass == SmoothPass::RefreshByFunction)
-        smoothByFunction_.resize(samples_ * 3 * ((harmonics_->count() + 3) / 4 * 4));
+    if (pass == SmoothPass::RefreshByFunction) smoothByFunction_.resize(samples_ * 3 * paddedQ_);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, samples_, 2048), [&](const tbb::blocked_range<std::size_t>& r) {
         weighProducts(reweigh, pass, r.begin(), r.end());
     });

@@ -102,6 +102,7 @@ private:
     std::size_t samples_ = 0;
     std::size_t K_ = 0;
     std::size_t paddedK_ = 0;        // K rounded up to a multiple of 4
+    std::size_t paddedQ_ = 0;        // the harmonic set's count rounded up to a multiple of 4
     IrradianceMoments moments_;      // E_m as given
     std::vector<float> haar_;        // wE_m = w0 E_m: samples x (3 terms, padded to 4 lanes)
     std::vector<float> input_;       // wE_m in the product's input order (arrangeInput)
