@@ -69,6 +69,46 @@ __attribute__((target("avx2,fma,f16c"))) void sampleAvx2(const Index* positions,
         for (int c = 0; c < 3; ++c) out[3 * m + c] += sum[c];
     }
 }
+
+// Two moments (the bake's default), four entries at a time: their eight values converted by
+// one vcvtph2ps, each entry's texel loaded into both 128-bit halves of a register and
+// multiplied by its two values, spread over the halves by one permute ([m0 x 4 | m1 x 4]):
+// one fused multiply-add per entry where sampleAvx2 spends two, and two scalar conversions
+// and broadcasts. Four chains, one per entry of a group. Measured on the 65,536-sample bunny
+// (36-function bake, 2026-11-27), `opal-bench relight`'s dome rotation: its irradiance
+// moments 21.1-21.4 ms with sampleAvx2, 14.6-14.8 ms this way.
+// A texel's padded RGB in both 128-bit halves of a register.
+template <typename Index>
+__attribute__((target("avx2,fma,f16c"))) inline __m256 texelInBothHalves(const float* radiance, Index position) {
+    return _mm256_broadcast_ps(reinterpret_cast<const __m128*>(radiance + std::size_t(position) * 4));
+}
+
+template <typename Index>
+__attribute__((target("avx2,fma,f16c"))) void sampleAvx2TwoMoments(const Index* positions, const std::uint16_t* half,
+                                                                   std::uint64_t begin, std::uint64_t end,
+                                                                   const float* radiance, const float (&scales)[2],
+                                                                   float* out) {
+    const __m256i spread[4] = {_mm256_setr_epi32(0, 0, 0, 0, 1, 1, 1, 1), _mm256_setr_epi32(2, 2, 2, 2, 3, 3, 3, 3),
+                               _mm256_setr_epi32(4, 4, 4, 4, 5, 5, 5, 5), _mm256_setr_epi32(6, 6, 6, 6, 7, 7, 7, 7)};
+    __m256 acc[4] = {_mm256_setzero_ps(), _mm256_setzero_ps(), _mm256_setzero_ps(), _mm256_setzero_ps()};
+    std::uint64_t e = begin;
+    for (; e + 4 <= end; e += 4, half += 8) {
+        const __m256 v = _mm256_cvtph_ps(_mm_loadu_si128(reinterpret_cast<const __m128i*>(half)));
+        for (int j = 0; j < 4; ++j) acc[j] = _mm256_fmadd_ps(_mm256_permutevar8x32_ps(v, spread[j]), texelInBothHalves(radiance, positions[e + std::uint64_t(j)]), acc[j]);
+    }
+    for (; e < end; ++e, half += 2) {
+        const __m256 v = _mm256_set_m128(_mm_set1_ps(_cvtsh_ss(half[1])), _mm_set1_ps(_cvtsh_ss(half[0])));
+        acc[0] = _mm256_fmadd_ps(v, texelInBothHalves(radiance, positions[e]), acc[0]);
+    }
+    const __m256 sum = _mm256_mul_ps(_mm256_add_ps(_mm256_add_ps(acc[0], acc[1]), _mm256_add_ps(acc[2], acc[3])),
+                                     _mm256_set_m128(_mm_set1_ps(scales[1]), _mm_set1_ps(scales[0])));
+    alignas(32) float lanes[8];
+    _mm256_store_ps(lanes, sum);
+    for (int c = 0; c < 3; ++c) {
+        out[c] += lanes[c];
+        out[3 + c] += lanes[4 + c];
+    }
+}
 #endif
 
 }  // namespace
@@ -156,8 +196,11 @@ void EnvironmentVectors::addRows(const Index* positions, const float* radiance, 
         for (std::size_t i = range.begin(); i != range.end(); ++i) {
 #if OPAL_ENVIRONMENT_VECTORS_AVX2
             if (avx2_) {
-                sampleAvx2<Index, M>(positions, halves_.data() + offsets_[i] * M, offsets_[i], offsets_[i + 1], radiance,
-                                     scales, moments.sample(i));
+                const std::uint16_t* half = halves_.data() + offsets_[i] * M;
+                if constexpr (M == 2)
+                    sampleAvx2TwoMoments<Index>(positions, half, offsets_[i], offsets_[i + 1], radiance, scales, moments.sample(i));
+                else
+                    sampleAvx2<Index, M>(positions, half, offsets_[i], offsets_[i + 1], radiance, scales, moments.sample(i));
                 continue;
             }
 #endif

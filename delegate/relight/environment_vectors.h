@@ -14,7 +14,9 @@
 // On the 65,536-sample bunny (m = 2), with 128 visible-transport terms, a dome edit streamed
 // 50 MB here instead of the asset's 134 MB, and the sums took (2 cores, medians): asset rows
 // 8-11 ms, this layout portable 7.6 ms, with FMA + F16C 3.7 ms; the occluded residuals of
-// sidecar 2.4 average 358 terms per sample there and take 9.3 ms.
+// sidecar 2.4 average 358 terms per sample there and take 9.3 ms. Two moments (the bake's
+// default) take their own loop, one fused multiply-add per entry for both
+// (sampleAvx2TwoMoments; its measurements are beside it).
 #pragma once
 
 #include "delegate/relight/dome_convolution.h"
