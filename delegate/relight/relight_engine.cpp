@@ -11,6 +11,7 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 #include <tbb/parallel_reduce.h>
 
 #include <algorithm>
@@ -153,15 +154,17 @@ void RelightEngine::setIrradiance(const IrradianceMoments& irradiance) {
 std::vector<std::string> RelightEngine::setMaterial(const Material& material) {
     std::vector<std::string> warnings;
     const Material clamped = asset_->range.clamp(material, &warnings);
-    const std::array<std::vector<double>, 3> s = projection_.project(clamped);  // s_k(sigma, eta)
+    // s_k(sigma, eta) and the self term's R_disk depend on the material alone: side by side.
+    std::array<std::vector<double>, 3> s;
+    tbb::parallel_invoke([&] { s = projection_.project(clamped); },
+                         [&] {
+                             if (asset_->transfer.selfTerm != SelfTerm::AtRunTime) return;
+                             self_.resize(samples_ * 3);
+                             selfTermReflectance(asset_->samples, asset_->unitsPerMm, clamped, self_);
+                         });
     profile_.assign(3 * paddedK_, 0.0f);
     for (int c = 0; c < 3; ++c)
         for (std::size_t k = 0; k < K_; ++k) profile_[c * paddedK_ + k] = float(s[c][k] / std::numbers::pi);
-    if (asset_->transfer.selfTerm == SelfTerm::AtRunTime) {
-        self_.resize(samples_ * 3);
-        selfTermReflectance(asset_->samples, asset_->unitsPerMm, clamped, self_);
-        for (float& r : self_) r = float(r / std::numbers::pi);
-    }
     const bool etaChanged = clamped.eta != material_.eta;
     material_ = clamped;
     smoothByFunctionCurrent_ = false;  // G is of the previous s_k
@@ -334,7 +337,8 @@ std::vector<float> RelightEngine::toVertices(std::span<const float> perSample) {
 RelightEngine::NegativeNoise RelightEngine::addSelfTermAndProject() {
     const float* self = self_.empty() ? nullptr : self_.data();
     const float* irradiance = irradiance_.data();
-    const Projected projected = self ? projectNonNegative(radiance_, [=](std::size_t i, float v) { return v + self[i] * irradiance[i]; })
+    constexpr float invPi = float(1.0 / std::numbers::pi);
+    const Projected projected = self ? projectNonNegative(radiance_, [=](std::size_t i, float v) { return v + invPi * self[i] * irradiance[i]; })
                                      : projectNonNegative(radiance_, [](std::size_t, float v) { return v; });
     if (!projected.finite)
         throw Error("asset '" + asset_->name +

@@ -118,7 +118,7 @@ private:
     Material material_;
     std::vector<double> fresnel_;    // c_m(material_.eta)
     std::vector<float> profile_;     // s_k / pi: 3 x paddedK
-    std::vector<float> self_;        // R_disk(rho_o; sigma) / pi: samples x 3 (empty: in the transfer)
+    std::vector<float> self_;        // R_disk(rho_o; sigma): samples x 3 (empty: in the transfer)
     std::vector<float> radiance_, irradiance_;
     NegativeNoise radianceNoise_, irradianceNoise_;
     RecycledBuffer vertexRadiance_;

@@ -4,6 +4,7 @@
 #include "schema/scatter/dipole.h"
 
 #include <Eigen/Dense>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
@@ -81,8 +82,12 @@ std::vector<double> ProfileProjection::unconstrainedCoefficients(const DipoleCoe
     return std::vector<double>(s0.data(), s0.data() + K);
 }
 
+// The three channels' fits are independent (about 0.12 ms each at K = 16, L = 256, most of
+// a material edit's serial work): one task each.
 std::array<std::vector<double>, 3> ProfileProjection::project(const Material& m) const {
-    return {coefficients(m.channel(0)), coefficients(m.channel(1)), coefficients(m.channel(2))};
+    std::array<std::vector<double>, 3> s;
+    tbb::parallel_for(0, 3, [&](int c) { s[std::size_t(c)] = coefficients(m.channel(c)); });
+    return s;
 }
 
 }  // namespace opal
