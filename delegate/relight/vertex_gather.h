@@ -48,11 +48,14 @@ private:
     template <int S>
     void gather(const std::span<const float> (&perSample)[S], const std::span<float> (&out)[S],
                 std::vector<Float4>& scratch) const;
+    template <int S, typename Index>
+    void gatherVertices(const Index* sample, const Float4* padded, const std::span<float> (&out)[S]) const;
 
     std::size_t samples_ = 0;
     std::vector<std::uint32_t> vertex_;   // visiting order: vertex_[i] is the i-th vertex visited
-    std::vector<std::uint32_t> offsets_;  // visits + 1, into sample_ and weight_
-    std::vector<std::uint32_t> sample_;
+    std::vector<std::uint32_t> offsets_;  // visits + 1, into the sample indices and weight_
+    std::vector<std::uint16_t> sample16_;  // the sample indices, when samples <= 65,536
+    std::vector<std::uint32_t> sample32_;  // otherwise
     std::vector<float> weight_;
 };
 

@@ -26,9 +26,12 @@ VertexWeights randomWeights(std::uint32_t vertices, std::uint32_t samples, std::
     return w;
 }
 
-TEST(VertexGather, EqualsThePlainSumInTheVerticesOwnOrder) {
-    const std::uint32_t samples = 500, vertices = 3000;
-    const VertexWeights w = randomWeights(vertices, samples, 5);
+// Sample indices are stored in 16 bits up to 65,536 samples and in 32 above: both sides
+// of the boundary, with the last sample read.
+void expectThePlainSum(std::uint32_t samples) {
+    const std::uint32_t vertices = 3000;
+    VertexWeights w = randomWeights(vertices, samples, 5);
+    w.samples.back() = samples - 1;
     std::mt19937 rng(9);
     std::vector<float> perSample(samples * 3);
     for (float& v : perSample) v = float(rng() % 10000) / 100.0f;
@@ -40,9 +43,13 @@ TEST(VertexGather, EqualsThePlainSumInTheVerticesOwnOrder) {
         for (int c = 0; c < 3; ++c) {
             double sum = 0.0;
             for (std::uint32_t e = w.offsets[v]; e < w.offsets[v + 1]; ++e) sum += double(w.weights[e]) * perSample[3 * w.samples[e] + c];
-            ASSERT_NEAR(out[3 * v + c], sum, 1e-5 * (1.0 + sum)) << "vertex " << v << " channel " << c;
+            ASSERT_NEAR(out[3 * v + c], sum, 1e-5 * (1.0 + sum)) << samples << " samples, vertex " << v << " channel " << c;
         }
     EXPECT_EQ(out[0], 0.0f);  // no weights: no radiance
+}
+
+TEST(VertexGather, EqualsThePlainSumInTheVerticesOwnOrder) {
+    for (std::uint32_t samples : {500u, 65536u, 65537u}) expectThePlainSum(samples);
 }
 
 // Two signals in one pass give, bit for bit, what two passes give.
