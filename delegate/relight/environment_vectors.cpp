@@ -70,6 +70,12 @@ __attribute__((target("avx2,fma,f16c"))) void sampleAvx2(const Index* positions,
     }
 }
 
+// A texel's padded RGB in both 128-bit halves of a register.
+template <typename Index>
+__attribute__((target("avx2,fma,f16c"))) inline __m256 texelInBothHalves(const float* radiance, Index position) {
+    return _mm256_broadcast_ps(reinterpret_cast<const __m128*>(radiance + std::size_t(position) * 4));
+}
+
 // Two moments (the bake's default), four entries at a time: their eight values converted by
 // one vcvtph2ps, each entry's texel loaded into both 128-bit halves of a register and
 // multiplied by its two values, spread over the halves by one permute ([m0 x 4 | m1 x 4]):
@@ -77,12 +83,6 @@ __attribute__((target("avx2,fma,f16c"))) void sampleAvx2(const Index* positions,
 // and broadcasts. Four chains, one per entry of a group. Measured on the 65,536-sample bunny
 // (36-function bake, 2026-11-27), `opal-bench relight`'s dome rotation: its irradiance
 // moments 21.1-21.4 ms with sampleAvx2, 14.6-14.8 ms this way.
-// A texel's padded RGB in both 128-bit halves of a register.
-template <typename Index>
-__attribute__((target("avx2,fma,f16c"))) inline __m256 texelInBothHalves(const float* radiance, Index position) {
-    return _mm256_broadcast_ps(reinterpret_cast<const __m128*>(radiance + std::size_t(position) * 4));
-}
-
 template <typename Index>
 __attribute__((target("avx2,fma,f16c"))) void sampleAvx2TwoMoments(const Index* positions, const std::uint16_t* half,
                                                                    std::uint64_t begin, std::uint64_t end,
@@ -94,7 +94,10 @@ __attribute__((target("avx2,fma,f16c"))) void sampleAvx2TwoMoments(const Index* 
     std::uint64_t e = begin;
     for (; e + 4 <= end; e += 4, half += 8) {
         const __m256 v = _mm256_cvtph_ps(_mm_loadu_si128(reinterpret_cast<const __m128i*>(half)));
-        for (int j = 0; j < 4; ++j) acc[j] = _mm256_fmadd_ps(_mm256_permutevar8x32_ps(v, spread[j]), texelInBothHalves(radiance, positions[e + std::uint64_t(j)]), acc[j]);
+        for (int j = 0; j < 4; ++j) {
+            const __m256 texel = texelInBothHalves(radiance, positions[e + std::uint64_t(j)]);
+            acc[j] = _mm256_fmadd_ps(_mm256_permutevar8x32_ps(v, spread[j]), texel, acc[j]);
+        }
     }
     for (; e < end; ++e, half += 2) {
         const __m256 v = _mm256_set_m128(_mm_set1_ps(_cvtsh_ss(half[1])), _mm_set1_ps(_cvtsh_ss(half[0])));
@@ -197,10 +200,11 @@ void EnvironmentVectors::addRows(const Index* positions, const float* radiance, 
 #if OPAL_ENVIRONMENT_VECTORS_AVX2
             if (avx2_) {
                 const std::uint16_t* half = halves_.data() + offsets_[i] * M;
+                float* out = moments.sample(i);
                 if constexpr (M == 2)
-                    sampleAvx2TwoMoments<Index>(positions, half, offsets_[i], offsets_[i + 1], radiance, scales, moments.sample(i));
+                    sampleAvx2TwoMoments<Index>(positions, half, offsets_[i], offsets_[i + 1], radiance, scales, out);
                 else
-                    sampleAvx2<Index, M>(positions, half, offsets_[i], offsets_[i + 1], radiance, scales, moments.sample(i));
+                    sampleAvx2<Index, M>(positions, half, offsets_[i], offsets_[i + 1], radiance, scales, out);
                 continue;
             }
 #endif
