@@ -1,6 +1,7 @@
 #include "delegate/relight/transfer_product.h"
 
 #include "delegate/relight/float4.h"
+#include "delegate/relight/prefetch.h"
 #include "schema/asset/sidecar_checks.h"
 #include "schema/error.h"
 
@@ -28,6 +29,23 @@ namespace opal {
 namespace {
 
 constexpr std::size_t kGroup = 8;  // columns per group; every row is whole groups
+
+// How far ahead of the group being summed the vector kernels prefetch a pair's values and
+// columns (prefetch.h), in columns (1.5 KB of values). The hardware's prefetchers alone left the AVX-512
+// row at about 5.6 cycles a column on the 65,536-sample bunny, with its reads of wE all
+// from L1 no faster (a temporary build), so it waited on the streamed arrays. Products per
+// point-light move there (opal-bench relight, medians, alternating runs, 2026-11-28): none
+// 38.1-39.2 ms; 128 columns 33.6; 256 30.7; 384 29.1; 512 29.9-30.1; 768 31.8; 1024 32.5;
+// 2048 32.7.
+constexpr std::size_t kPrefetchColumns = 384;
+
+// The next groups' values (two binary16 a column) and columns, kPrefetchColumns ahead of
+// column e.
+template <typename Index>
+inline void prefetchGroups(const std::uint16_t* half, const Index* column, std::uint64_t e) {
+    prefetchAhead(half + 2 * e, kPrefetchColumns * 2 * sizeof(std::uint16_t));
+    prefetchAhead(column + e, kPrefetchColumns * sizeof(Index));
+}
 
 // One pair's rows as the kernels read them, and where their sums go:
 // y + (r K + k) C for the first matrix, C further on for the second (when there is one).
@@ -124,6 +142,7 @@ __attribute__((target("avx2,fma,f16c"))) void pairRowsAvx2(const PairRows<Index>
     for (std::uint32_t r = begin; r < end; ++r) {
         Avx2Chains even = zeroChains(), odd = zeroChains();
         for (std::uint64_t e = p.offsets[r]; e < p.offsets[r + 1]; e += kGroup) {
+            prefetchGroups(p.half, p.column, e);
             const auto* h = reinterpret_cast<const __m128i*>(p.half + 2 * e);
             _mm256_store_ps(v, _mm256_cvtph_ps(_mm_loadu_si128(h)));
             _mm256_store_ps(v + 8, _mm256_cvtph_ps(_mm_loadu_si128(h + 1)));
@@ -156,6 +175,7 @@ __attribute__((target("avx512f,avx512vl,avx512dq,avx2,fma,f16c"))) void pairRows
         __m512 acc[kGroup];
         for (__m512& a : acc) a = _mm512_setzero_ps();
         for (std::uint64_t e = p.offsets[r]; e < p.offsets[r + 1]; e += kGroup) {
+            prefetchGroups(p.half, p.column, e);
             const __m512 v = _mm512_maskz_cvtph_ps(kAll, _mm256_loadu_si256(reinterpret_cast<const __m256i*>(p.half + 2 * e)));
             for (std::size_t j = 0; j < kGroup; ++j) {
                 const __m512 xs = _mm512_maskz_broadcast_f32x8(kAll, _mm256_loadu_ps(x + std::size_t(p.column[e + j]) * W));
