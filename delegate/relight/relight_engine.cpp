@@ -2,6 +2,7 @@
 
 #include "delegate/relight/float4.h"
 #include "delegate/relight/haar_locality_order.h"
+#include "delegate/relight/prefetch.h"
 #include "delegate/relight/vertex_gather.h"
 #include "schema/asset/self_term.h"
 #include "schema/error.h"
@@ -239,18 +240,25 @@ namespace {
 
 using Float16Lanes = float __attribute__((vector_size(16 * sizeof(float))));
 
+// How far ahead of the row of w1 U being folded addSmooth16 prefetches it (prefetch.h).
+// material_after_light on the 65,536-sample bunny (opal-bench relight, medians,
+// 2026-11-28): none 10.1-10.2 ms; 1 KB 8.4; 2 KB 8.1; 4 KB 8.2; 8 KB 8.3.
+constexpr std::size_t kFoldPrefetchBytes = 2048;
+
 // addSmooth for 16 k at a time (K = 16, the default basis): each u_q read once, the three
 // channels' sums held in registers, three independent chains of Q multiply-adds. Four k at
 // a time, each sum is one chain of Q dependent multiply-adds (latency-bound). Measured on
 // the 65,536-sample bunny with the 36 functions, `opal-bench relight`'s
 // material_after_light (the edit that folds the smooth part into z_k): 11.2-11.3 ms this
-// way, 17.4-17.6 ms four k at a time; a material edit that does not fold takes 1.8-2.0 ms.
+// way, 17.4-17.6 ms four k at a time; a material edit that does not fold takes 1.8-2.0 ms
+// (2026-11-27; with the prefetch below, 8.1 ms, 2026-11-28).
 // The fold reads w1 U, 151 MB: about 6 ms at the triad bandwidth measured then.
 __attribute__((target_clones("avx512f", "avx2", "default"))) void addSmooth16(
     const float (&alpha)[3][kMaxHarmonics], std::size_t Q, const float* u, float* z) {
     Float16Lanes sum[3];
     std::memcpy(sum, z, sizeof(sum));
     for (std::size_t q = 0; q < Q; ++q) {
+        prefetchAhead(u + q * 16, kFoldPrefetchBytes);
         Float16Lanes uq;
         std::memcpy(&uq, u + q * 16, sizeof(uq));
         sum[0] += alpha[0][q] * uq;
