@@ -17,4 +17,10 @@ inline void prefetchAhead(const void* at, std::size_t bytes) {
     __builtin_prefetch(reinterpret_cast<const void*>(reinterpret_cast<std::uintptr_t>(at) + bytes));
 }
 
+// Every 64-byte line of the `length` bytes that start `bytes` past `at`: a row of a
+// per-sample array some rows ahead.
+inline void prefetchRangeAhead(const void* at, std::size_t bytes, std::size_t length) {
+    for (std::size_t b = 0; b < length; b += 64) prefetchAhead(at, bytes + b);
+}
+
 }  // namespace opal
