@@ -2,6 +2,9 @@
 
 #include "schema/error.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <cmath>
 #include <string>
 
@@ -11,14 +14,24 @@ IrradianceMoments::IrradianceMoments(std::uint32_t samples, std::uint32_t terms,
     : samples(samples), terms(terms), basis(basis), values(std::size_t(samples) * terms * 3, 0.0f) {}
 
 std::vector<float> IrradianceMoments::combine(std::span<const double> c) const {
+    std::vector<float> rgb;
+    combine(c, rgb);
+    return rgb;
+}
+
+void IrradianceMoments::combine(std::span<const double> c, std::vector<float>& rgb) const {
     if (c.size() != terms)
         throw Error("irradiance: " + std::to_string(c.size()) + " Fresnel coefficients for " +
                     std::to_string(terms) + " moments");
-    std::vector<float> rgb(std::size_t(samples) * 3, 0.0f);
-    for (std::size_t i = 0; i < samples; ++i)
-        for (std::uint32_t m = 0; m < terms; ++m)
-            for (int ch = 0; ch < 3; ++ch) rgb[3 * i + ch] += float(c[m]) * sample(i)[3 * m + ch];
-    return rgb;
+    rgb.resize(std::size_t(samples) * 3);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, samples, 8192), [&](const tbb::blocked_range<std::size_t>& r) {
+        for (std::size_t i = r.begin(); i != r.end(); ++i)
+            for (int ch = 0; ch < 3; ++ch) {
+                float sum = 0.0f;
+                for (std::uint32_t m = 0; m < terms; ++m) sum += float(c[m]) * sample(i)[3 * m + ch];
+                rgb[3 * i + ch] = sum;
+            }
+    });
 }
 
 IrradianceMoments& IrradianceMoments::operator+=(const IrradianceMoments& other) {

@@ -38,6 +38,9 @@ struct IrradianceMoments {
 
     // E(x_i; eta) = sum_m c[m] E_m(x_i), RGB: samples x 3. c.size() must equal terms.
     std::vector<float> combine(std::span<const double> c) const;
+    // The same into rgb (resized), in parallel: what a light edit re-forms, into a buffer
+    // it keeps.
+    void combine(std::span<const double> c, std::vector<float>& rgb) const;
     // Adds another set of the same shape and basis (throws opal::Error otherwise).
     IrradianceMoments& operator+=(const IrradianceMoments& other);
 };

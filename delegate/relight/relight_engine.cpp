@@ -320,7 +320,7 @@ void RelightEngine::formRadiance(bool reweigh) {
     cdf97InverseCharts(std::span<float>(radiance_), asset_->layout, 3);
     irradianceNoise_ = {};  // E is re-formed (and zeroed) only when eta or the lights changed
     if (reweigh) {
-        irradiance_ = moments_.combine(fresnel_);
+        moments_.combine(fresnel_, irradiance_);
         irradianceNoise_ = zeroNegatives(irradiance_);
     }
     radianceNoise_ = addSelfTermAndProject();
