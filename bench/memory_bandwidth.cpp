@@ -3,6 +3,7 @@
 #include "delegate/hd/aov.h"
 #include "delegate/relight/environment_vectors.h"
 #include "delegate/relight/transfer_product.h"
+#include "delegate/relight/vertex_gather.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -48,9 +49,10 @@ StreamedBytes streamedBytes(const TranslucentAsset& asset, int width, int height
     bytes.environment =
         dome ? double(EnvironmentVectors(asset.environment, asset.samples.size()).memoryBytes()) + bytes.light : 0.0;
     const double vertices = double(asset.mesh.points.size());
-    const double weights = double(asset.vertexWeights.samples.size());
+    // The gather's weights, sample indices and visiting order as the engine lays them out
+    // (16-bit indices up to 65,536 samples): its own count, not a copy of its layout.
     bytes.material = 4.0 * n * 3.0 * 4.0 * std::ceil(K / 4.0) + 4.0 * n * 3.0 +
-                     weights * (sizeof(std::uint32_t) + sizeof(float)) + 4.0 * vertices * 3.0;
+                     double(VertexGather(asset.vertexWeights, asset.samples.size()).memoryBytes()) + 4.0 * vertices * 3.0;
     bytes.materialAfterLight = bytes.material;
     if (!asset.transfer.harmonics.empty())
         bytes.materialAfterLight += 4.0 * n * double(asset.transfer.harmonicSet.count) * 4.0 * std::ceil(K / 4.0);

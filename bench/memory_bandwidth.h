@@ -21,8 +21,9 @@ double triadBandwidth(std::size_t elements = std::size_t(1) << 24, int repeats =
 //                moved again under the same material, RelightEngine::smoothPass) and the
 //                harmonic functions read twice (fit and residual: samples x Q floats)
 //   environment: the compact dome vectors (EnvironmentVectors::memoryBytes), then as light
-//   material:    z_k read (samples x 3 x K floats), radiance written, the vertex weights
-//                read and the vertex radiance written
+//   material:    z_k read (samples x 3 x K floats), radiance written, the vertex gather's
+//                weights, indices and order read (VertexGather::memoryBytes) and the
+//                vertex radiance written
 //   pass:        every AOV channel of every pixel read and written once (the running mean),
 //                as float
 struct StreamedBytes {
