@@ -142,7 +142,6 @@ std::vector<Step1Rows> compressRows(const TransferPlan& plan, const TransferSamp
         r.perRow = plan.perRow[std::size_t(k)];
         r.column.resize((end - begin) * r.perRow);
         r.value.resize((end - begin) * r.perRow);
-        r.harmonicCount = samples.harmonicSet.count;
         r.harmonics.resize((end - begin) * Q);
     }
     StageScope stage(progress, "transfer step 1 (Haar)", end - begin);
@@ -188,10 +187,10 @@ std::vector<Step1Rows> compressRows(const TransferPlan& plan, const TransferSamp
 
 std::vector<float> gatherHarmonics(const std::vector<Step1Rows>& rows, std::size_t begin, std::size_t end) {
     const std::size_t K = rows.size(), count = end - begin;
-    const std::size_t Q = rows.empty() ? 0 : rows[0].harmonicCount;
+    const std::size_t Q = rows.empty() || count == 0 ? 0 : rows[0].harmonics.size() / count;
     std::vector<float> out(count * K * Q);
     for (std::size_t k = 0; k < K; ++k) {
-        if (rows[k].harmonicCount != Q || rows[k].harmonics.size() != count * Q)
+        if (rows[k].harmonics.size() != count * Q)
             throw Error("transfer: matrix " + std::to_string(k) + " has " + std::to_string(rows[k].harmonics.size()) +
                         " harmonic values, expected " + std::to_string(count) + " rows x " + std::to_string(Q));
         for (std::size_t o = 0; o < count; ++o)

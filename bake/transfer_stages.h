@@ -43,8 +43,7 @@ struct Step1Rows {
     std::uint32_t perRow = 0;
     std::vector<std::uint32_t> column;  // rows x perRow
     std::vector<float> value;
-    std::uint32_t harmonicCount = 0;  // Q = TransferSamples::harmonicSet.count
-    std::vector<float> harmonics;     // rows x Q: the row's T_k f_q, before step 1
+    std::vector<float> harmonics;  // rows x Q: the row's T_k f_q, before step 1 (Q = the set's count)
 };
 
 // Step 1 for output rows [begin, end), one Step1Rows per k.
