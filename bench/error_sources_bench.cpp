@@ -20,13 +20,15 @@
 // RMSE; per-sample luminance error over the samples whose reference is at least 1% of the
 // 99th percentile, median and 95th percentile, and over the darker half of them;
 // chromaticity). The dome is the map with the identity transform, as `opal-bench
-// accuracy` lights it. Per material, three exact gathers, O(N^2) each, and two replays,
-// O(N^2 K) each (about 40 s in all at 16,384 samples on 2 cores, minutes at 65,536).
+// accuracy` lights it. Per material, three exact gathers, O(N) per output, and two replays,
+// O(N K) per output (about 40 s in all at every one of 16,384 samples on 2 cores, minutes
+// at 65,536: `--outputs M` measures M random samples).
 // Findings: docs/ARCHITECTURE.md#compression.
 #include "bench/accuracy_json.h"
 #include "bench/dome_map.h"
 #include "bench/image_accuracy.h"
 #include "bench/mean_free_path_ends.h"
+#include "bench/random_outputs.h"
 #include "bench/shared_assets.h"
 #include "bench/subcommand.h"
 #include "bench/transfer_step_gathers.h"
@@ -40,6 +42,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -57,9 +60,19 @@ struct Options {
     fs::path env = studioDomeMap();
     std::vector<std::string> materials = kEndMaterials;
     std::uint32_t keepMin = TransferSettings{}.minPerRow;
+    std::size_t outputs = 0;  // random samples measured (0: every sample)
 };
 
 std::vector<float> copyOf(std::span<const float> values) { return {values.begin(), values.end()}; }
+
+// values (samples x 3) at `outputs` (every sample when empty), outputs x 3.
+std::vector<float> at(std::span<const float> values, std::span<const std::uint32_t> outputs) {
+    if (outputs.empty()) return copyOf(values);
+    std::vector<float> picked(3 * outputs.size());
+    for (std::size_t j = 0; j < outputs.size(); ++j)
+        std::copy_n(values.begin() + 3 * std::size_t(outputs[j]), 3, picked.begin() + 3 * j);
+    return picked;
+}
 
 // The engine's L and E for the material under the given moments.
 std::pair<std::vector<float>, std::vector<float>> relight(const std::shared_ptr<const TranslucentAsset>& asset,
@@ -86,24 +99,25 @@ void printRow(const std::string& material, const char* source, const ImageAccura
 }
 
 Json measureMaterial(const std::shared_ptr<const TranslucentAsset>& asset, MeshIrradiance& dome,
-                     const std::string& name, const TransferSettings& step1) {
+                     const std::string& name, const TransferSettings& step1, std::span<const std::uint32_t> outputs) {
     const Material material = materialNamed(name, *asset);
     const std::vector<float> engineE = dome.exactIrradiance(material.eta);
     const std::vector<float> referenceE = dome.referenceIrradiance(material.eta);
     const auto [domeL, domeE] = relight(asset, material, dome.moments());
     const auto [uniformL, uniformE] = relight(asset, material, uniformMoments(dome.moments()));
-    const std::vector<float> exactL = referenceGather(*asset, material, domeE);
-    const std::vector<float> losslessL = losslessGather(*asset, material, domeE);
-    const std::vector<float> step1L = step1Gather(*asset, material, domeE, step1);
+    const std::vector<float> exactL = referenceGather(*asset, material, domeE, outputs);
+    const std::vector<float> losslessL = losslessGather(*asset, material, domeE, outputs);
+    const std::vector<float> step1L = step1Gather(*asset, material, domeE, step1, outputs);
+    const std::vector<float> engineL = at(domeL, outputs);
 
     const std::pair<const char*, ImageAccuracy> sources[] = {
         {"irradiance", measureAccuracy(engineE, referenceE)},
-        {"transfer_dome", measureAccuracy(domeL, exactL)},
+        {"transfer_dome", measureAccuracy(engineL, exactL)},
         {"dome_basis", measureAccuracy(losslessL, exactL)},
         {"dome_step1", measureAccuracy(step1L, losslessL)},
-        {"dome_step2_values", measureAccuracy(domeL, step1L)},
-        {"transfer_uniform", measureAccuracy(uniformL, referenceGather(*asset, material, uniformE))},
-        {"whole", measureAccuracy(domeL, referenceGather(*asset, material, referenceE))},
+        {"dome_step2_values", measureAccuracy(engineL, step1L)},
+        {"transfer_uniform", measureAccuracy(at(uniformL, outputs), referenceGather(*asset, material, uniformE, outputs))},
+        {"whole", measureAccuracy(engineL, referenceGather(*asset, material, referenceE, outputs))},
     };
     Json j = {{"material", materialJson(name, material)}};
     for (const auto& [source, a] : sources) {
@@ -127,21 +141,24 @@ int run(const Options& options) {
     MeshIrradiance dome(asset, Imath::M44d());
     dome.setLight(hd::SdfPath("/Dome"), light);
 
-    std::printf("opal-bench error-sources: %s, %zu samples, dome %s; per-sample figures (bench/image_accuracy.h); "
-                "step 1 replayed at keep %g, keep-min %u\n",
-                options.asset.c_str(), asset->samples.size(), options.env.c_str(), asset->transfer.keepFraction,
-                options.keepMin);
+    const std::vector<std::uint32_t> outputs = randomOutputs(asset->samples.size(), options.outputs);
+    std::printf("opal-bench error-sources: %s, %zu samples, dome %s; per-sample figures (bench/image_accuracy.h) at %zu "
+                "of them (the dome's E at all); step 1 replayed at keep %g, keep-min %u\n",
+                options.asset.c_str(), asset->samples.size(), options.env.c_str(),
+                outputs.empty() ? asset->samples.size() : outputs.size(), asset->transfer.keepFraction, options.keepMin);
     std::printf("%-8s %-18s %9s %8s %8s %8s %8s\n", "material", "source", "rel.RMSE", "Y med", "Y p95", "dark p95",
                 "chr p95");
     Json results = Json::array();
     TransferSettings step1;
     step1.keepFraction = asset->transfer.keepFraction;
     step1.minPerRow = options.keepMin;
-    for (const std::string& name : options.materials) results.push_back(measureMaterial(asset, dome, name, step1));
+    for (const std::string& name : options.materials)
+        results.push_back(measureMaterial(asset, dome, name, step1, outputs));
     if (!options.jsonFile.empty()) {
         const Json j = {{"asset", options.asset},
                         {"env", options.env.string()},
                         {"samples", asset->samples.size()},
+                        {"measured_outputs", outputs.empty() ? asset->samples.size() : outputs.size()},
                         {"step1_keep", step1.keepFraction},
                         {"step1_keep_min", step1.minPerRow},
                         {"results", results}};
@@ -164,6 +181,9 @@ int runErrorSources(int argc, char** argv) {
     app.add_option("--keep-min", options.keepMin,
                    "the floor of step 1 the asset was baked with (opal-bake --keep-min; the asset does not record it)")
         ->capture_default_str();
+    app.add_option("--outputs", options.outputs,
+                   "measure the transfer at this many random samples (default: every sample; the replays cost O(N K) "
+                   "per sample, minutes for all of 65,536)");
     app.add_option("--json", options.jsonFile, "also write every figure as JSON to this file");
     CLI11_PARSE(app, argc, argv);
     try {

@@ -1,6 +1,7 @@
 #include "bench/relight_reference.h"
 
 #include "bench/cpu_time.h"
+#include "bench/random_outputs.h"
 #include "bench/relight_scene.h"
 #include "delegate/relight/reference_gather.h"
 #include "delegate/relight/stopwatch.h"
@@ -9,28 +10,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
-#include <random>
 
 namespace opal::bench {
-
-namespace {
-
-constexpr std::uint32_t kOutputSeed = 1;
-
-// `count` distinct samples drawn uniformly (fixed seed), ascending; empty for all of them.
-std::vector<std::uint32_t> randomOutputs(std::size_t samples, std::size_t count) {
-    if (count == 0 || count >= samples) return {};
-    std::vector<std::uint32_t> all(samples);
-    std::iota(all.begin(), all.end(), 0u);
-    std::mt19937 random(kOutputSeed);
-    std::shuffle(all.begin(), all.end(), random);
-    all.resize(count);
-    std::sort(all.begin(), all.end());
-    return all;
-}
-
-}  // namespace
 
 RelightReference::RelightReference(const RelightScene& scene, std::shared_ptr<const TranslucentAsset> asset,
                                    std::shared_ptr<const LatLongMap> domeMap, const Material& material,

@@ -13,6 +13,8 @@
 #include <tbb/parallel_for.h>
 
 #include <array>
+#include <numeric>
+#include <utility>
 #include <numbers>
 #include <string>
 
@@ -46,26 +48,41 @@ Weights engineWeights(const TranslucentAsset& asset, const Material& material, s
     return w;
 }
 
-// L_o = sum_k (s_k / pi) y_k + (R_disk / pi) E_o per channel, y: K x 3 for output o.
-void radianceAt(const Weights& w, std::span<const double> y, std::span<const float> e, std::size_t o,
-                std::span<float> out) {
+// L_o = sum_k (s_k / pi) y_k + (R_disk / pi) E_o per channel into out[0, 3), y: K x 3 for
+// output o.
+void radianceAt(const Weights& w, std::span<const double> y, std::span<const float> e, std::size_t o, float* out) {
     const std::size_t K = w.s[0].size();
     for (int c = 0; c < 3; ++c) {
         double sum = 0.0;
         for (std::size_t k = 0; k < K; ++k) sum += w.s[c][k] * y[3 * k + c];
-        out[3 * o + c] = float(sum + double(w.self[3 * o + c]) * e[3 * o + c]);
+        out[c] = float(sum + double(w.self[3 * o + c]) * e[3 * o + c]);
     }
 }
 
+// The outputs to replay: `outputs`, or every sample when it is empty.
+std::vector<std::uint32_t> outputList(std::size_t samples, std::span<const std::uint32_t> outputs) {
+    if (!outputs.empty()) {
+        for (const std::uint32_t o : outputs)
+            if (o >= samples)
+                throw Error("step gathers: output " + std::to_string(o) + " of " + std::to_string(samples) +
+                            " samples");
+        return {outputs.begin(), outputs.end()};
+    }
+    std::vector<std::uint32_t> all(samples);
+    std::iota(all.begin(), all.end(), 0u);
+    return all;
+}
+
 std::vector<float> losslessRows(const TransferSamples& mm, const BasisLookup& lookup, const Weights& w,
-                                std::span<const float> e) {
+                                std::span<const float> e, std::span<const std::uint32_t> outputs) {
     const std::size_t n = mm.size(), K = std::size_t(lookup.K());
-    std::vector<float> out(3 * n);
+    std::vector<float> out(3 * outputs.size());
     tbb::enumerable_thread_specific<std::vector<float>> rows([&] { return std::vector<float>(K * n); });
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 16), [&](const tbb::blocked_range<std::size_t>& r) {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, outputs.size(), 16), [&](const tbb::blocked_range<std::size_t>& r) {
         std::vector<float>& t = rows.local();
         std::vector<double> y(3 * K);
-        for (std::size_t o = r.begin(); o != r.end(); ++o) {
+        for (std::size_t slot = r.begin(); slot != r.end(); ++slot) {
+            const std::size_t o = outputs[slot];
             transferRow(o, mm, lookup, t);
             std::fill(y.begin(), y.end(), 0.0);
             for (std::size_t k = 0; k < K; ++k)
@@ -73,7 +90,7 @@ std::vector<float> losslessRows(const TransferSamples& mm, const BasisLookup& lo
                     if (i == o) continue;  // the self term, added at run time
                     for (int c = 0; c < 3; ++c) y[3 * k + c] += double(t[k * n + i]) * e[3 * i + c];
                 }
-            radianceAt(w, y, e, o, out);
+            radianceAt(w, y, e, o, out.data() + 3 * slot);
         }
     });
     return out;
@@ -86,8 +103,22 @@ std::vector<float> haarOfIrradiance(const ChartLayout& layout, std::span<const f
     return we;
 }
 
+// [first, last) slots of `outputs` whose samples are consecutive, at most `most` each.
+std::vector<std::pair<std::size_t, std::size_t>> consecutiveRuns(std::span<const std::uint32_t> outputs,
+                                                                 std::size_t most) {
+    std::vector<std::pair<std::size_t, std::size_t>> runs;
+    for (std::size_t first = 0; first < outputs.size();) {
+        std::size_t last = first + 1;
+        while (last < outputs.size() && last - first < most && outputs[last] == outputs[last - 1] + 1) ++last;
+        runs.emplace_back(first, last);
+        first = last;
+    }
+    return runs;
+}
+
 std::vector<float> step1Rows(const TranslucentAsset& asset, const TransferSamples& mm, const BasisLookup& lookup,
-                             const TransferSettings& settings, const Weights& w, std::span<const float> e) {
+                             const TransferSettings& settings, const Weights& w, std::span<const float> e,
+                             std::span<const std::uint32_t> outputs) {
     const std::size_t n = mm.size(), K = std::size_t(lookup.K());
     const TransferPlan plan = planTransfer(n, asset.layout, asset.basis, settings);
     // As the engine: with the harmonic transfer, step 1 carries only E's residual after its
@@ -103,40 +134,51 @@ std::vector<float> step1Rows(const TranslucentAsset& asset, const TransferSample
         fit.residual(e, 3, a, residual, 3);
     }
     const std::vector<float> we = haarOfIrradiance(asset.layout, residual);
-    std::vector<float> out(3 * n);
-    for (std::size_t begin = 0; begin < n; begin += kRowBlock) {
-        const std::size_t end = std::min(n, begin + kRowBlock);
-        const std::vector<Step1Rows> rows = compressRows(plan, mm, lookup, begin, end, nullptr, CancelToken());
-        std::vector<double> y((end - begin) * 3 * K, 0.0);  // y_k = T_k E for the block's rows
-        for (std::size_t k = 0; k < K; ++k) {
-            forEachRowEntry(rows[k], begin, [&](std::uint32_t o, std::uint32_t j, float value) {
-                for (int c = 0; c < 3; ++c) y[((o - begin) * K + k) * 3 + c] += double(value) * we[3 * std::size_t(j) + c];
-            });
-            if (!split) continue;
-            for (std::size_t o = begin; o < end; ++o)
-                for (std::size_t q = 0; q < Q; ++q)
+    std::vector<float> out(3 * outputs.size());
+    // Runs of consecutive samples (every sample: blocks of kRowBlock rows, one after the other
+    // with compressRows parallel over each; a random subset: mostly single rows, in parallel).
+    const std::vector<std::pair<std::size_t, std::size_t>> runs = consecutiveRuns(outputs, kRowBlock);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, runs.size(), 1), [&](const tbb::blocked_range<std::size_t>& r) {
+        for (std::size_t run = r.begin(); run != r.end(); ++run) {
+            const auto [first, last] = runs[run];  // slots of `outputs`
+            const std::size_t begin = outputs[first], end = begin + (last - first);
+            const std::vector<Step1Rows> rows = compressRows(plan, mm, lookup, begin, end, nullptr, CancelToken());
+            std::vector<double> y((end - begin) * 3 * K, 0.0);  // y_k = T_k E for the run's rows
+            for (std::size_t k = 0; k < K; ++k) {
+                forEachRowEntry(rows[k], begin, [&](std::uint32_t o, std::uint32_t j, float value) {
                     for (int c = 0; c < 3; ++c)
-                        y[((o - begin) * K + k) * 3 + c] += double(a[q * 3 + c]) * rows[k].harmonics[(o - begin) * Q + q];
+                        y[((o - begin) * K + k) * 3 + c] += double(value) * we[3 * std::size_t(j) + c];
+                });
+                if (!split) continue;
+                for (std::size_t o = begin; o < end; ++o)
+                    for (std::size_t q = 0; q < Q; ++q)
+                        for (int c = 0; c < 3; ++c)
+                            y[((o - begin) * K + k) * 3 + c] +=
+                                double(a[q * 3 + c]) * rows[k].harmonics[(o - begin) * Q + q];
+            }
+            for (std::size_t o = begin; o < end; ++o)
+                radianceAt(w, std::span<const double>(y).subspan((o - begin) * 3 * K, 3 * K), e, o,
+                           out.data() + 3 * (first + (o - begin)));
         }
-        for (std::size_t o = begin; o < end; ++o)
-            radianceAt(w, std::span<const double>(y).subspan((o - begin) * 3 * K, 3 * K), e, o, out);
-    }
+    });
     return out;
 }
 
 }  // namespace
 
 std::vector<float> losslessGather(const TranslucentAsset& asset, const Material& material,
-                                  std::span<const float> irradiance) {
+                                  std::span<const float> irradiance, std::span<const std::uint32_t> outputs) {
     const Weights w = engineWeights(asset, material, irradiance);
-    return losslessRows(toTransferSamples(asset.samples, asset.unitsPerMm), BasisLookup(asset.basis), w, irradiance);
+    return losslessRows(toTransferSamples(asset.samples, asset.unitsPerMm), BasisLookup(asset.basis), w, irradiance,
+                        outputList(asset.samples.size(), outputs));
 }
 
 std::vector<float> step1Gather(const TranslucentAsset& asset, const Material& material,
-                               std::span<const float> irradiance, const TransferSettings& settings) {
+                               std::span<const float> irradiance, const TransferSettings& settings,
+                               std::span<const std::uint32_t> outputs) {
     const Weights w = engineWeights(asset, material, irradiance);
     return step1Rows(asset, toTransferSamples(asset.samples, asset.unitsPerMm), BasisLookup(asset.basis), settings, w,
-                     irradiance);
+                     irradiance, outputList(asset.samples.size(), outputs));
 }
 
 }  // namespace opal::bench

@@ -13,27 +13,30 @@
 //
 // What the engine adds beyond `step 1` is step 2 and the stored values' precision. s_k and
 // the self term are the engine's (ProfileProjection of the clamped material; R_disk when
-// the asset leaves the self term to run time). Each costs a bake's step 1: O(N^2 K), in
-// blocks of rows (memory O(block x K x kept)), parallel with TBB.
+// the asset leaves the self term to run time). Each costs a bake's step 1 over its outputs:
+// O(N K) per output, O(N^2 K) for all (memory O(block x K x kept)), parallel with TBB.
 #pragma once
 
 #include "bake/transfer_builder.h"
 #include "schema/asset/translucent_asset.h"
 
+#include <cstdint>
 #include <span>
 #include <vector>
 
 namespace opal::bench {
 
-// The lossless transfer's L, samples x 3. irradiance: E per sample, samples x 3 (the
-// engine's E for the material's eta). Throws opal::Error for a mismatched irradiance or an
-// asset whose self term lives in its transfer (sidecars before 2.3).
+// The lossless transfer's L at `outputs` (ascending samples; every sample when empty),
+// outputs x 3. irradiance: E per sample, samples x 3 (the engine's E for the material's
+// eta). O(N K) per output. Throws opal::Error for a mismatched irradiance, an output out of
+// range or an asset whose self term lives in its transfer (sidecars before 2.3).
 std::vector<float> losslessGather(const TranslucentAsset& asset, const Material& material,
-                                  std::span<const float> irradiance);
+                                  std::span<const float> irradiance, std::span<const std::uint32_t> outputs = {});
 
-// Step 1's L, samples x 3, replaying step 1 with `settings` (the asset records its keep
-// fraction but not its floor: pass the bake's). Throws as losslessGather.
+// Step 1's L at `outputs` as losslessGather, replaying step 1 with `settings` (the asset
+// records its keep fraction but not its floor: pass the bake's). Throws as losslessGather.
 std::vector<float> step1Gather(const TranslucentAsset& asset, const Material& material,
-                               std::span<const float> irradiance, const TransferSettings& settings);
+                               std::span<const float> irradiance, const TransferSettings& settings,
+                               std::span<const std::uint32_t> outputs = {});
 
 }  // namespace opal::bench
