@@ -58,7 +58,9 @@ StreamedBytes streamedBytes(const TranslucentAsset& asset, int width, int height
         bytes.materialAfterLight += 4.0 * n * double(asset.transfer.harmonicSet.count) * 4.0 * std::ceil(K / 4.0);
     double channels = 0.0;
     for (const hd::AovDescriptor& aov : hd::aovTable()) channels += double(aov.channels.size());
-    bytes.pass = 2.0 * 4.0 * channels * double(width) * double(height);
+    const double pixels = double(width) * double(height);
+    bytes.pass = 2.0 * 4.0 * channels * pixels;
+    bytes.colorPass = 2.0 * 4.0 * double(hd::aovDescriptor(hd::AovId::Color).channels.size()) * pixels;
     return bytes;
 }
 

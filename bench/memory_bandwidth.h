@@ -25,9 +25,9 @@ double triadBandwidth(std::size_t elements = std::size_t(1) << 24, int repeats =
 //                weights, indices and order read (VertexGather::memoryBytes) and the
 //                vertex radiance written
 //   pass:        every AOV channel of every pixel read and written once (the running mean),
-//                as float
+//                as float; colorPass the same for color alone (what opal-view binds)
 struct StreamedBytes {
-    double light = 0.0, environment = 0.0, material = 0.0, pass = 0.0;
+    double light = 0.0, environment = 0.0, material = 0.0, pass = 0.0, colorPass = 0.0;
     // The first material edit after a light edit: material, and w1 U read once (samples x Q
     // x K floats) to fold the smooth part into z_k (RelightEngine::smoothPass).
     double materialAfterLight = 0.0;

@@ -13,6 +13,7 @@
 //                re-projected to the cube map, dotted with the baked vectors, the products
 //   frame        one 1280 x 720 render pass with every AOV bound (opal-render's default),
 //                nothing changed: image formation only (#image-formation)
+//   view_frame   the same with color alone bound, as opal-view renders
 //   draft        the same with opal:draftBlock 4: the draft pass (one ray per 4 x 4 pixels)
 //                an interactive viewer shows first
 //
@@ -289,9 +290,28 @@ void waitForPasses(const OpalRenderDelegate& delegate, int passes) {
         std::this_thread::sleep_for(std::chrono::milliseconds(1));
 }
 
+// The first pass after a restart, R times after a warm-up, split into the pass itself and
+// its hand-over to the render thread.
+void timeFirstPasses(Session& s, hd::RenderPass& pass, const hd::RenderPassState& state,
+                     const std::vector<hd::AovBinding>& bindings, int repeats, CaseResult& result) {
+    for (int i = 0; i <= repeats; ++i) {
+        s.delegate.stop();  // the next execute starts the frame again
+        const auto start = std::chrono::steady_clock::now();
+        pass.execute(state, bindings);
+        waitForPasses(s.delegate, 1);
+        const double firstMs = millisecondsSince(start);
+        const double firstPassMs = std::get<double>(s.delegate.renderStats().at("passMs"));
+        if (i == 0) continue;
+        result.times.ms.push_back(firstMs);
+        result.breakdown[0].second.ms.push_back(firstPassMs);
+        result.breakdown[1].second.ms.push_back(firstMs - firstPassMs);
+    }
+}
+
 // Progressive image formation, every AOV bound: "frame" times the first pass (the centre
-// sample of every pixel) after a restart, "converge" the whole frame to
-// opal:samplesPerPixel, split into the first pass and the median pass after it.
+// sample of every pixel) after a restart, "view_frame" the same with color alone, "converge"
+// the whole frame to opal:samplesPerPixel, split into the first pass and the median pass
+// after it; "light_frame" a light move to the first pass of the new frame, color alone.
 std::vector<CaseResult> frameCases(Session& s, int repeats, FrameOutput& output) {
     CaseResult first = newCase("frame", "1280x720 first pass after a restart, every AOV bound", kFrameMs);
     CaseResult converge = newCase("converge", "1280x720 to opal:samplesPerPixel, every AOV bound", kConvergeMs);
@@ -308,18 +328,15 @@ std::vector<CaseResult> frameCases(Session& s, int repeats, FrameOutput& output)
     first.breakdown = {{"render_pass", {}}, {"handoff", {}}};
     // The first pass alone, stopped there: back-to-back passes as the old single-sample frame
     // ran, so that the two compare under the same load.
-    for (int i = 0; i <= repeats; ++i) {
-        s.delegate.stop();  // the next execute starts the frame again
-        const auto start = std::chrono::steady_clock::now();
-        pass->execute(state, bindings);
-        waitForPasses(s.delegate, 1);
-        const double firstMs = millisecondsSince(start);
-        const double firstPassMs = std::get<double>(s.delegate.renderStats().at("passMs"));
-        if (i == 0) continue;
-        first.times.ms.push_back(firstMs);
-        first.breakdown[0].second.ms.push_back(firstPassMs);
-        first.breakdown[1].second.ms.push_back(firstMs - firstPassMs);
-    }
+    timeFirstPasses(s, *pass, state, bindings, repeats, first);
+    // The same with what opal-view binds: color alone.
+    const auto color = std::find_if(bindings.begin(), bindings.end(), [](const hd::AovBinding& b) { return b.aov == "color"; });
+    if (color == bindings.end()) throw Error("the delegate's AOV table has no color");
+    const std::vector<hd::AovBinding> viewBindings = {*color};
+    CaseResult view = newCase("view_frame", "1280x720 first pass after a restart, color alone (as opal-view binds)",
+                              kFrameMs);
+    view.breakdown = {{"render_pass", {}}, {"handoff", {}}};
+    timeFirstPasses(s, *pass, state, viewBindings, repeats, view);
     CaseResult draft = newCase("draft", "1280x720 draft (opal:draftBlock 4) after a restart, every AOV bound", kDraftMs);
     s.delegate.setRenderSetting("opal:draftBlock", kDraftBlock);
     for (int i = 0; i <= repeats; ++i) {
@@ -352,8 +369,9 @@ std::vector<CaseResult> frameCases(Session& s, int repeats, FrameOutput& output)
     }
 
     // What a viewer shows after the artist drags the key light: the sync relights, the
-    // commit restarts the frame on the render thread, the first pass lands.
-    CaseResult moved = newCase("light_frame", "point light moved -> sync -> first pass of the new frame",
+    // commit restarts the frame on the render thread, the first pass lands (color alone, as
+    // opal-view binds it).
+    CaseResult moved = newCase("light_frame", "point light moved -> sync -> first pass of the new frame, color alone",
                                kLightMs + kFrameMs);
     moved.breakdown = {{"sync", {}}, {"first_pass", {}}};
     for (int i = 0; i <= repeats; ++i) {
@@ -361,7 +379,7 @@ std::vector<CaseResult> frameCases(Session& s, int repeats, FrameOutput& output)
         s.scene.moveKeyLight(s.index, i + 1);
         s.index.sync();
         const double syncMs = millisecondsSince(start);
-        pass->execute(state, bindings);
+        pass->execute(state, viewBindings);
         waitForPasses(s.delegate, 1);
         const double totalMs = millisecondsSince(start);
         waitForPasses(s.delegate, std::numeric_limits<int>::max());  // the next move starts from rest
@@ -370,12 +388,12 @@ std::vector<CaseResult> frameCases(Session& s, int repeats, FrameOutput& output)
         moved.breakdown[0].second.ms.push_back(syncMs);
         moved.breakdown[1].second.ms.push_back(totalMs - syncMs);
     }
-    return {first, draft, converge, moved};
+    return {first, view, draft, converge, moved};
 }
 
 // The cases that time image formation, which the reference does not change.
 bool imageCase(const std::string& name) {
-    return name == "frame" || name == "draft" || name == "converge" || name == "light_frame";
+    return name == "frame" || name == "view_frame" || name == "draft" || name == "converge" || name == "light_frame";
 }
 
 void announce(const char* what) {
@@ -594,8 +612,9 @@ void setStreamedBytes(std::vector<CaseResult>& cases, const TranslucentAsset& as
         if (c.name == "light") c.streamedBytes = bytes.light;
         if (c.name == "environment") c.streamedBytes = bytes.environment;
         if (c.name == "frame") c.streamedBytes = bytes.pass;
+        if (c.name == "view_frame") c.streamedBytes = bytes.colorPass;
         if (c.name == "converge") c.streamedBytes = bytes.pass * passCount;
-        if (c.name == "light_frame") c.streamedBytes = bytes.light + bytes.pass;
+        if (c.name == "light_frame") c.streamedBytes = bytes.light + bytes.colorPass;
     }
 }
 
