@@ -2,9 +2,6 @@
 
 #include "schema/scatter/dipole.h"
 
-#include <algorithm>
-#include <cmath>
-
 namespace opal {
 
 FresnelTable::FresnelTable(double eta) : eta_(eta), tabulated_(eta >= 1.0) {
@@ -18,12 +15,6 @@ FresnelTable::FresnelTable(double eta) : eta_(eta), tabulated_(eta >= 1.0) {
     }
 }
 
-double FresnelTable::transmittance(double mu) const {
-    if (!tabulated_) return fresnelTransmittance(eta_, mu);
-    const double x = std::sqrt(std::clamp(mu, 0.0, 1.0)) * kIntervals;
-    const int i = std::min(int(x), kIntervals - 1);
-    const double f = x - i;
-    return values_[std::size_t(i)] + (values_[std::size_t(i) + 1] - values_[std::size_t(i)]) * f;
-}
+double FresnelTable::exact(double mu) const { return fresnelTransmittance(eta_, mu); }
 
 }  // namespace opal

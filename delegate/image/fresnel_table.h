@@ -7,7 +7,9 @@
 // the table holds nothing and lookups are exact.
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 
 namespace opal {
 
@@ -18,10 +20,19 @@ public:
     explicit FresnelTable(double eta);
 
     double eta() const { return eta_; }
-    // F_t(eta, mu), mu clamped into [0, 1]; one square root, one interpolation.
-    double transmittance(double mu) const;
+    // F_t(eta, mu), mu clamped into [0, 1]; one square root, one interpolation, in float
+    // (the table's own precision), inline: every hit pixel takes two.
+    double transmittance(double mu) const {
+        if (!tabulated_) return exact(mu);
+        const float x = std::sqrt(std::clamp(float(mu), 0.0f, 1.0f)) * float(kIntervals);
+        const int i = std::min(int(x), kIntervals - 1);
+        const float f = x - float(i);
+        return values_[std::size_t(i)] + (values_[std::size_t(i) + 1] - values_[std::size_t(i)]) * f;
+    }
 
 private:
+    double exact(double mu) const;
+
     double eta_;
     bool tabulated_;
     std::array<float, kIntervals + 1> values_{};

@@ -8,6 +8,7 @@
 #include "schema/error.h"
 
 #include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #if defined(__SSE2__)
@@ -72,10 +73,13 @@ struct FrameContext {
     std::vector<const ShadowFieldLight*> emitters;  // frame.emitters
     double shadowOffset = 0.0;        // kShadowOffset * the scene's extent
     CameraView::PixelRect scene;      // where primary rays may hit (empty: no meshes)
+    bool irradiance = false;          // the irradiance AOV is bound: interpolate E at hits
 };
 
-FrameContext frameContext(const Frame& frame, const CameraView& camera, const RenderOptions& options) {
-    FrameContext context{frame, options, camera, {}, {}, {}, {}, 0.0, {}};
+FrameContext frameContext(const Frame& frame, const CameraView& camera, const RenderOptions& options,
+                          const AovTargets& targets) {
+    FrameContext context{frame, options, camera, {}, {}, {}, {}, 0.0, {}, false};
+    context.irradiance = targets[std::size_t(hd::AovId::Irradiance)] != nullptr;
     for (const DomeView& dome : frame.domes) {
         context.domes.emplace_back(dome.map, dome.domeFromWorld, Imath::V3f(dome.scale.x, dome.scale.y, dome.scale.z));
         context.backgroundLevels.push_back(dome.visibleToCamera ? context.domes.back().levelFor(camera.pixelAngle()) : -1);
@@ -192,7 +196,7 @@ Surface shadeSurface(const FrameContext& context, const Ray& ray, const RayHit& 
     const double transmittance = mesh.fresnel->transmittance(muO);
     s.fresnelReflectance = 1.0 - transmittance;  // fresnelReflectance(eta, n.wo): F_t clamps the same way
     pixel.subsurface = interpolate(*shading.vertexRadiance, v, b) * float(transmittance);
-    pixel.irradiance = interpolate(*shading.vertexIrradiance, v, b);
+    if (context.irradiance) pixel.irradiance = interpolate(*shading.vertexIrradiance, v, b);
     pixel.normal = Imath::V3f(s.n);
     pixel.depth = hit.t;
     pixel.primId = float(shading.primId);
@@ -285,7 +289,7 @@ void prefetchVertices(const FrameContext& context, const Block& block) {
         for (int j = 0; j < 3; ++j) {
             if (mesh.normals) __builtin_prefetch(mesh.normals + v[j]);
             __builtin_prefetch(mesh.shading->vertexRadiance->data() + 3 * std::size_t(v[j]));
-            __builtin_prefetch(mesh.shading->vertexIrradiance->data() + 3 * std::size_t(v[j]));
+            if (context.irradiance) __builtin_prefetch(mesh.shading->vertexIrradiance->data() + 3 * std::size_t(v[j]));
         }
     }
 }
@@ -498,7 +502,7 @@ namespace {
 // pixels, at `offset` inside the cell, written to every pixel of the cell.
 bool renderSamples(const Frame& frame, const CameraView& camera, const RenderOptions& options,
                    const AovTargets& targets, int pass, int step, const std::function<bool()>& stop) {
-    const FrameContext context = frameContext(frame, camera, options);
+    const FrameContext context = frameContext(frame, camera, options, targets);
     const auto [sample, blend] = passSample(options, pass);
     const Imath::V2f offset = step == 1 ? sample : Imath::V2f(0.5f * float(step));
     const int width = camera.width(), height = camera.height();
@@ -508,11 +512,14 @@ bool renderSamples(const Frame& frame, const CameraView& camera, const RenderOpt
     const int tileHeight = std::max(blockHeight, options.tileSize / blockHeight * blockHeight);
     const int tilesX = (width + tileWidth - 1) / tileWidth, tilesY = (height + tileHeight - 1) / tileHeight;
     std::atomic<bool> stopped{false};
+    // One tile's buffers per thread for the whole pass: the scheduler hands out many small
+    // ranges, and each would otherwise allocate and clear a tile of samples.
+    tbb::enumerable_thread_specific<TileAovs> tiles([&] { return TileAovs(targets, pass, step, tileWidth, tileHeight); });
     tbb::parallel_for(tbb::blocked_range<int>(0, tilesX * tilesY), [&](const tbb::blocked_range<int>& range) {
         Block block;
         block.step = step;
         block.offset = offset;
-        TileAovs tile(targets, pass, step, tileWidth, tileHeight);
+        TileAovs& tile = tiles.local();
         for (int t = range.begin(); t != range.end(); ++t) {
             if (stopped.load(std::memory_order_relaxed) || (stop && stop())) {
                 stopped = true;
