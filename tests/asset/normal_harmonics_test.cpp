@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <random>
+#include <string>
 #include <vector>
 
 namespace opal {
@@ -69,9 +70,11 @@ std::vector<SurfaceSample> cloudSamples(std::size_t n, std::uint32_t seed) {
 
 // Values that are a combination of the set's functions come back as that combination,
 // residual 0; a residual is orthogonal to every f_q (least squares' normal equations).
-void expectRecoversACombination(const std::vector<SurfaceSample>& samples, const HarmonicSet& set) {
+void expectRecoversACombination(const std::vector<SurfaceSample>& samples, const HarmonicSet& set,
+                                std::size_t C = 2) {
+    SCOPED_TRACE(std::to_string(set.count) + " functions, " + std::to_string(C) + " channels");
     const HarmonicFit fit(samples, set);
-    const std::size_t C = 2, Q = set.count;
+    const std::size_t Q = set.count;
     ASSERT_EQ(fit.count(), Q);
     std::mt19937 rng(5);
     std::uniform_real_distribution<float> u(-1.0f, 1.0f);
@@ -110,6 +113,16 @@ TEST(HarmonicFit, RecoversACombinationAndLeavesAnOrthogonalResidual) {
     expectRecoversACombination(sphereSamples(2000, 3), HarmonicSet{9});
     const std::vector<SurfaceSample> cloud = cloudSamples(2000, 3);
     expectRecoversACombination(cloud, harmonicSetFor(cloud));
+}
+
+// The channel counts a light edit fits (three per Fresnel moment) take their own loops, and
+// any other count Eigen's; over several blocks of samples with a part-filled last one.
+TEST(HarmonicFit, EveryChannelCountFitsTheSame) {
+    const std::vector<SurfaceSample> sphere = sphereSamples(5000, 4), cloud = cloudSamples(5000, 4);
+    for (const std::size_t C : {1, 3, 5, 6, 12}) {
+        expectRecoversACombination(sphere, HarmonicSet{9}, C);
+        expectRecoversACombination(cloud, harmonicSetFor(cloud), C);
+    }
 }
 
 // A flat patch (every normal the same) cannot tell the functions apart: the fit still
