@@ -416,7 +416,10 @@ public:
           row_(std::size_t(tileWidth) * 4), cellRow_(step > 1 ? row_.size() : 0) {}
 
     // The sample of tile pixel (x - x0, y - y0), or of the draft's cell holding it: shade into it.
-    Pixel& pixel(int x, int y) { return pixels_[std::size_t(y / step_) * tileWidth_ + std::size_t(x / step_)]; }
+    Pixel& pixel(int x, int y) {
+        if (step_ > 1) x /= step_, y /= step_;  // a pass (step 1) divides nothing: two idivs a pixel
+        return pixels_[std::size_t(y) * tileWidth_ + std::size_t(x)];
+    }
 
     // Rows [y0, y1) x columns [x0, x1) of the tile into the frame; `blend` = w_p / W_p.
     // Pass 0 writes every bound AOV, later passes the filtered ones.
