@@ -141,7 +141,7 @@ struct Block {
     std::array<Ray, kBlockPixels> rays;
     std::array<std::optional<RayHit>, kBlockPixels> hits;
     std::array<Surface, kBlockPixels> surfaces;
-    std::array<Pixel, kBlockPixels> pixels;
+    std::array<Pixel*, kBlockPixels> pixels{};  // where each sample is shaded: its place in the tile
 };
 
 // dome.radiance for any count, DomeLookup::kLanes at a time.
@@ -168,7 +168,7 @@ void background(const FrameContext& context, Block& block) {
         if (context.backgroundLevels[d] < 0) continue;
         lookUp(context.domes[d], directions.data(), count, context.backgroundLevels[d], radiance.data());
         for (std::size_t k = 0; k < count; ++k) {
-            Pixel& pixel = block.pixels[pixelOf[k]];
+            Pixel& pixel = *block.pixels[pixelOf[k]];
             pixel.background += radiance[k];
             pixel.alpha = 1.0f;
         }
@@ -258,7 +258,7 @@ void domeReflections(const FrameContext& context, Block& block) {
         for (const DomeLookup& dome : context.domes) {
             lookUp(dome, directions.data(), count, dome.levelFor(mesh->footprint), radiance.data());
             for (std::size_t k = 0; k < count; ++k)
-                block.pixels[pixelOf[k]].specular += radiance[k] * float(block.surfaces[pixelOf[k]].fresnelReflectance);
+                block.pixels[pixelOf[k]]->specular += radiance[k] * float(block.surfaces[pixelOf[k]].fresnelReflectance);
         }
     }
 }
@@ -272,7 +272,7 @@ void shadeSpecular(const FrameContext& context, Block& block) {
     for (int i = 0; i < block.count; ++i) {
         const Surface& s = block.surfaces[i];
         if (!s.mesh) continue;
-        block.pixels[i].specular = Imath::V3f(sums[i]);
+        block.pixels[i]->specular = Imath::V3f(sums[i]);
     }
     domeReflections(context, block);
 }
@@ -303,7 +303,7 @@ void shadeEmitters(const FrameContext& context, Block& block) {
         const double length = Imath::V3d(ray.direction()).length();
         if (!(length > 0.0)) continue;
         const Imath::V3d o(ray.origin()), d = Imath::V3d(ray.direction()) / length;
-        Pixel& pixel = block.pixels[i];
+        Pixel& pixel = *block.pixels[i];
         const double hitT = block.hits[i] ? double(block.hits[i]->t) : std::numeric_limits<double>::infinity();
         double nearest = hitT;
         for (std::size_t k = 0; k < context.emitters.size(); ++k) {
@@ -325,7 +325,7 @@ void shadeEmitters(const FrameContext& context, Block& block) {
 void shadeBlock(const FrameContext& context, Block& block) {
     for (int i = 0; i < block.count; ++i) {
         block.rays[i] = context.camera.ray(block.x[i] + block.offset.x, block.y[i] + block.offset.y);
-        block.pixels[i] = Pixel{};
+        *block.pixels[i] = Pixel{};
         block.surfaces[i] = Surface{};
     }
     const std::span<const Ray> rays = std::span(block.rays).first(std::size_t(block.count));
@@ -341,7 +341,7 @@ void shadeBlock(const FrameContext& context, Block& block) {
     bool specular = false;
     for (int i = 0; i < block.count; ++i) {
         if (!hits[i]) continue;
-        block.surfaces[i] = shadeSurface(context, rays[i], *hits[i], block.pixels[i]);
+        block.surfaces[i] = shadeSurface(context, rays[i], *hits[i], *block.pixels[i]);
         specular = specular || block.surfaces[i].mesh;
     }
     background(context, block);
@@ -539,10 +539,10 @@ bool renderSamples(const Frame& frame, const CameraView& camera, const RenderOpt
                     for (int y = by; y < std::min(by + blockHeight, y1); y += step)
                         for (int x = bx; x < std::min(bx + blockWidth, x1); x += step) {
                             block.x[block.count] = x;
-                            block.y[block.count++] = y;
+                            block.y[block.count] = y;
+                            block.pixels[block.count++] = &tile.pixel(x - x0, y - y0);
                         }
                     shadeBlock(context, block);
-                    for (int i = 0; i < block.count; ++i) tile.pixel(block.x[i] - x0, block.y[i] - y0) = block.pixels[i];
                 }
             tile.flush(x0, y0, x1, y1, blend);
         }
