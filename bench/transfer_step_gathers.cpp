@@ -13,10 +13,10 @@
 #include <tbb/parallel_for.h>
 
 #include <array>
-#include <numeric>
-#include <utility>
 #include <numbers>
+#include <numeric>
 #include <string>
+#include <utility>
 
 namespace opal::bench {
 

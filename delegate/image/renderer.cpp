@@ -417,7 +417,7 @@ public:
 
     // The sample of tile pixel (x - x0, y - y0), or of the draft's cell holding it: shade into it.
     Pixel& pixel(int x, int y) {
-        if (step_ > 1) x /= step_, y /= step_;  // a pass (step 1) divides nothing: two idivs a pixel
+        if (step_ > 1) x /= step_, y /= step_;  // two integer divisions a sample, which a pass does not need
         return pixels_[std::size_t(y) * tileWidth_ + std::size_t(x)];
     }
 

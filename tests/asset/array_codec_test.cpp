@@ -36,11 +36,7 @@ std::vector<float> throughFile(const test::TempDir& dir, std::span<const float> 
     return back;
 }
 
-std::vector<std::uint32_t> bits(std::span<const float> v) {
-    std::vector<std::uint32_t> b;
-    for (float x : v) b.push_back(std::bit_cast<std::uint32_t>(x));
-    return b;
-}
+using test::bits;
 
 // Magnitudes spread over 40 octaves below `largest`, random signs, a few exact zeros.
 std::vector<float> spreadValues(std::size_t n, float largest, std::uint32_t seed) {

@@ -117,7 +117,7 @@ TEST(HarmonicFit, RecoversACombinationAndLeavesAnOrthogonalResidual) {
 
 // The channel counts a light edit fits (three per Fresnel moment) take their own loops, and
 // any other count Eigen's; over several blocks of samples with a part-filled last one.
-TEST(HarmonicFit, EveryChannelCountFitsTheSame) {
+TEST(HarmonicFit, RecoversACombinationInEveryChannelCount) {
     const std::vector<SurfaceSample> sphere = sphereSamples(5000, 4), cloud = cloudSamples(5000, 4);
     for (const std::size_t C : {1, 3, 5, 6, 12}) {
         expectRecoversACombination(sphere, HarmonicSet{9}, C);

@@ -18,11 +18,7 @@ using test::errorOf;
 using test::TempDir;
 using namespace shadow_field_chunk;
 
-std::vector<std::uint32_t> bits(const std::vector<float>& v) {
-    std::vector<std::uint32_t> out;
-    for (float f : v) out.push_back(std::bit_cast<std::uint32_t>(f));
-    return out;
-}
+using test::bits;
 
 void expectSame(const ShadowField& a, const ShadowField& b) {
     EXPECT_EQ(a.name, b.name);

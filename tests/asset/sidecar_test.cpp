@@ -24,11 +24,7 @@ using test::errorOf;
 
 using test::TempDir;
 
-std::vector<std::uint32_t> bits(std::span<const float> v) {
-    std::vector<std::uint32_t> b;
-    for (float x : v) b.push_back(std::bit_cast<std::uint32_t>(x));
-    return b;
-}
+using test::bits;
 
 std::vector<std::uint32_t> bits(std::span<const SurfaceSample> samples) {
     std::vector<float> f;

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
@@ -16,12 +17,22 @@
 #include <functional>
 #include <initializer_list>
 #include <iterator>
+#include <span>
 #include <string>
 #include <vector>
 
 #include <unistd.h>
 
 namespace opal::test {
+
+// The bit patterns of `values`: equal when the floats are the same bit for bit (NaNs and
+// signed zeros included), which EXPECT_EQ on floats does not say.
+inline std::vector<std::uint32_t> bits(std::span<const float> values) {
+    std::vector<std::uint32_t> out;
+    out.reserve(values.size());
+    for (const float v : values) out.push_back(std::bit_cast<std::uint32_t>(v));
+    return out;
+}
 
 // The message of the opal::Error `f` throws; "NO ERROR" or "NOT AN opal::Error: ..."
 // otherwise, which no expected message contains.
