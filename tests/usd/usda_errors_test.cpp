@@ -197,7 +197,7 @@ TEST(UsdaErrors, WriterRefusesTextTheReaderWouldRefuse) {
     for (const std::string& bad : {"a" + NUL + "b", std::string("lone \xe9 byte")}) {
         Layer layer;
         Prim prim;
-        prim.name = "A";
+        prim.name = std::string(1, 'A');  // not = "A": GCC 12 misreads that assignment's bound (-Wstringop-overflow)
         prim.addAttribute("s", Value::make<types::String>(bad));
         layer.rootPrims.push_back(prim);
         EXPECT_THROW(writeUsda(layer), opal::Error) << bad;
