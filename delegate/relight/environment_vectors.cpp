@@ -142,7 +142,6 @@ EnvironmentVectors::EnvironmentVectors(const EnvironmentTransfer& transfer, std:
         transfer.indices.size() != transfer.values.size())
         throw Error(context + count(transfer.offsets.size()) + " row offsets for " + count(samples) + " samples x " +
                     count(terms_) + " terms, or entries that do not match them");
-    const bool narrow = texels_ <= 65536;
     // One scale per m, from that moment's largest value.
     std::vector<int> exponents(terms_);
     for (std::uint32_t m = 0; m < terms_; ++m) {
@@ -159,7 +158,8 @@ EnvironmentVectors::EnvironmentVectors(const EnvironmentTransfer& transfer, std:
         scales_.push_back(std::ldexp(1.0f, exponents[m]));
     }
     const std::size_t expected = transfer.values.size() / terms_;
-    (narrow ? positions16_.reserve(expected) : positions32_.reserve(expected));
+    positions_ = CompactIndices(texels_);
+    positions_.reserve(expected);
     halves_.reserve(expected * terms_);
     offsets_.reserve(samples + 1);
     offsets_.push_back(0);
@@ -186,13 +186,10 @@ EnvironmentVectors::EnvironmentVectors(const EnvironmentTransfer& transfer, std:
             for (; j < entries.size() && entries[j].position == position; ++j)
                 any |= toNormalHalf(entries[j].value, exponents[entries[j].m], halves[entries[j].m]);
             if (!any) continue;  // every value negligible
-            if (narrow)
-                positions16_.push_back(std::uint16_t(position));
-            else
-                positions32_.push_back(position);
+            positions_.push_back(position);  // checked below texels
             halves_.insert(halves_.end(), halves, halves + terms_);
         }
-        offsets_.push_back(narrow ? positions16_.size() : positions32_.size());
+        offsets_.push_back(positions_.size());
     }
 }
 
@@ -282,10 +279,7 @@ void EnvironmentVectors::addIrradiance(std::span<const float> haarRadiance, Irra
             default: addRows<Index, 3>(index, padded_.data(), weight, moments); break;
         }
     };
-    if (texels_ <= 65536)
-        withTerms(positions16_.data());
-    else
-        withTerms(positions32_.data());
+    positions_.withData(withTerms);
 }
 
 }  // namespace opal

@@ -19,6 +19,7 @@
 // (sampleAvx2TwoMoments; its measurements are beside it).
 #pragma once
 
+#include "delegate/relight/compact_indices.h"
 #include "delegate/relight/dome_convolution.h"
 #include "delegate/relight/irradiance.h"
 #include "schema/asset/translucent_asset.h"
@@ -65,8 +66,8 @@ public:
     // Bytes held: the compact vectors and the padded radiance (texels x 4 floats, kept after
     // the first call).
     std::size_t memoryBytes() const {
-        return offsets_.capacity() * sizeof(std::uint64_t) + positions16_.capacity() * sizeof(std::uint16_t) +
-               positions32_.capacity() * sizeof(std::uint32_t) + halves_.capacity() * sizeof(std::uint16_t) +
+        return offsets_.capacity() * sizeof(std::uint64_t) + positions_.memoryBytes() +
+               halves_.capacity() * sizeof(std::uint16_t) +
                scales_.capacity() * sizeof(float) + padded_.capacity() * sizeof(float);
     }
 
@@ -81,8 +82,7 @@ private:
     std::uint32_t texels_ = 0;
     bool avx2_ = false;
     std::vector<std::uint64_t> offsets_;      // per sample, into the position lists
-    std::vector<std::uint16_t> positions16_;  // when texels <= 65,536
-    std::vector<std::uint32_t> positions32_;  // otherwise
+    CompactIndices positions_;                // texels, per sample ascending
     std::vector<std::uint16_t> halves_;       // per position, terms binary16 values
     std::vector<float> scales_;               // 2^e per m
     std::vector<float> padded_;               // addIrradiance's radiance, texels x 4 (RGB, 0)

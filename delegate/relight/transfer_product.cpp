@@ -327,24 +327,17 @@ TransferProduct::Pair TransferProduct::makePair(const CompressedTransfer& transf
     });
     std::size_t columns = 0;
     for (const PairPiece& piece : pieces) columns += piece.slots.size();
-    const bool narrow = samples_ <= 65536;
-    (narrow ? pair.columns16.reserve(columns) : pair.columns32.reserve(columns));
+    pair.columns = CompactIndices(samples_);
+    pair.columns.reserve(columns);
     pair.halves.reserve(2 * columns);
     pair.rowOffsets.reserve(samples_ + 1);
     pair.rowOffsets.push_back(0);
     for (const PairPiece& piece : pieces) {
-        if (narrow)
-            pair.columns16.insert(pair.columns16.end(), piece.slots.begin(), piece.slots.end());
-        else
-            pair.columns32.insert(pair.columns32.end(), piece.slots.begin(), piece.slots.end());
+        pair.columns.append(piece.slots);
         pair.halves.insert(pair.halves.end(), piece.halves.begin(), piece.halves.end());
         for (std::uint32_t length : piece.lengths) pair.rowOffsets.push_back(pair.rowOffsets.back() + length);
     }
     return pair;
-}
-
-std::uint32_t TransferProduct::columnAt(const Pair& pair, std::uint64_t i) const {
-    return samples_ <= 65536 ? pair.columns16[i] : pair.columns32[i];
 }
 
 std::uint64_t TransferProduct::nonZeros() const {
@@ -359,7 +352,7 @@ float TransferProduct::value(std::size_t k, std::uint32_t row, std::uint32_t col
     const std::uint32_t slot = slots_.empty() ? column : slots_[column];
     const std::uint32_t q = slots_.empty() ? row : slots_[row];
     for (std::uint64_t i = p.rowOffsets[q]; i < p.rowOffsets[q + 1]; ++i)
-        if (columnAt(p, i) == slot) return storedHalfToFloat(p.halves[2 * i + k % 2]) * p.scale[k % 2];
+        if (p.columns[i] == slot) return storedHalfToFloat(p.halves[2 * i + k % 2]) * p.scale[k % 2];
     return 0.0f;
 }
 
@@ -401,10 +394,7 @@ void TransferProduct::multiplyRows(const float* x, std::size_t lanes, float* y, 
             pairRowsPortable<Index, Cs>(p, x, begin, end);
         };
         const auto withIndex = [&](auto channels) {
-            if (samples_ <= 65536)
-                rows(pair.columns16.data(), channels);
-            else
-                rows(pair.columns32.data(), channels);
+            pair.columns.withData([&](const auto* index) { rows(index, channels); });
         };
         if (C == 3) withIndex(std::integral_constant<std::size_t, 3>{});
         if (C == 6) withIndex(std::integral_constant<std::size_t, 6>{});
@@ -415,8 +405,8 @@ void TransferProduct::multiplyRows(const float* x, std::size_t lanes, float* y, 
 std::size_t TransferProduct::memoryBytes() const {
     std::size_t bytes = pairs_.capacity() * sizeof(Pair) + (slots_.capacity() + rowAt_.capacity()) * sizeof(std::uint32_t);
     for (const Pair& p : pairs_)
-        bytes += p.rowOffsets.capacity() * sizeof(std::uint64_t) + p.columns16.capacity() * sizeof(std::uint16_t) +
-                 p.columns32.capacity() * sizeof(std::uint32_t) + p.halves.capacity() * sizeof(std::uint16_t);
+        bytes += p.rowOffsets.capacity() * sizeof(std::uint64_t) + p.columns.memoryBytes() +
+                 p.halves.capacity() * sizeof(std::uint16_t);
     return bytes;
 }
 

@@ -22,6 +22,7 @@
 // multiply-add). Timings on that bunny: delegate/DELEGATE.md.
 #pragma once
 
+#include "delegate/relight/compact_indices.h"
 #include "delegate/relight/scaled_half.h"
 #include "schema/asset/translucent_asset.h"
 
@@ -75,8 +76,7 @@ public:
 private:
     struct Pair {  // matrices 2g and 2g + 1 (the second all zero when K is odd and 2g + 1 = K)
         std::vector<std::uint64_t> rowOffsets;  // into columns; every row a multiple of 8 long
-        std::vector<std::uint16_t> columns16;   // input slots, when samples <= 65,536
-        std::vector<std::uint32_t> columns32;   // otherwise
+        CompactIndices columns;                 // input slots
         std::vector<std::uint16_t> halves;      // two per column: binary16 of v 2^-e, or 0
         float scale[2] = {1.0f, 1.0f};          // 2^e of each matrix
     };
@@ -88,7 +88,6 @@ private:
     Pair makePair(const CompressedTransfer& transfer, std::size_t first) const;
     PairPiece makePairPiece(const CompressedTransfer& transfer, std::size_t first, const int* exponent,
                             std::uint32_t begin, std::uint32_t end) const;
-    std::uint32_t columnAt(const Pair& pair, std::uint64_t i) const;
 
     std::size_t samples_ = 0, K_ = 0;
     Kernel kernel_ = Kernel::Portable;

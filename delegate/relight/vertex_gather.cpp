@@ -52,15 +52,12 @@ VertexGather::VertexGather(const VertexWeights& weights, std::size_t samples) : 
     std::stable_sort(vertex_.begin(), vertex_.end(), [&](std::uint32_t a, std::uint32_t b) { return key[a] < key[b]; });
     offsets_.reserve(vertices + 1);
     offsets_.push_back(0);
-    const bool narrow = samples <= 65536;
-    (narrow ? sample16_.reserve(weights.samples.size()) : sample32_.reserve(weights.samples.size()));
+    sample_ = CompactIndices(samples);
+    sample_.reserve(weights.samples.size());
     weight_.reserve(weights.weights.size());
     for (std::uint32_t v : vertex_) {
         for (std::uint32_t e = weights.offsets[v]; e < weights.offsets[v + 1]; ++e) {
-            if (narrow)
-                sample16_.push_back(std::uint16_t(weights.samples[e]));  // checked below samples
-            else
-                sample32_.push_back(weights.samples[e]);
+            sample_.push_back(weights.samples[e]);  // checked below samples
             weight_.push_back(weights.weights[e]);
         }
         offsets_.push_back(std::uint32_t(weight_.size()));
@@ -88,10 +85,7 @@ void VertexGather::gather(const std::span<const float> (&perSample)[S], const st
                 scratch[S * i + s] = Float4{p[0], p[1], p[2], 0.0f};
             }
     });
-    if (samples_ <= 65536)
-        gatherVertices<S>(sample16_.data(), scratch.data(), out);
-    else
-        gatherVertices<S>(sample32_.data(), scratch.data(), out);
+    sample_.withData([&](const auto* sample) { gatherVertices<S>(sample, scratch.data(), out); });
 }
 
 // The sums over each vertex's weights, in visiting order. Sample indices are 16 bits when
@@ -134,8 +128,8 @@ void VertexGather::apply(std::span<const float> perSampleA, std::span<const floa
 }
 
 std::size_t VertexGather::memoryBytes() const {
-    return (vertex_.capacity() + offsets_.capacity() + sample32_.capacity()) * sizeof(std::uint32_t) +
-           sample16_.capacity() * sizeof(std::uint16_t) + weight_.capacity() * sizeof(float);
+    return (vertex_.capacity() + offsets_.capacity()) * sizeof(std::uint32_t) + sample_.memoryBytes() +
+           weight_.capacity() * sizeof(float);
 }
 
 }  // namespace opal

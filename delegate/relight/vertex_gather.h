@@ -11,6 +11,7 @@
 // Sample indices are checked once, when the layout is built.
 #pragma once
 
+#include "delegate/relight/compact_indices.h"
 #include "delegate/relight/float4.h"
 #include "schema/asset/translucent_asset.h"
 
@@ -54,8 +55,7 @@ private:
     std::size_t samples_ = 0;
     std::vector<std::uint32_t> vertex_;   // visiting order: vertex_[i] is the i-th vertex visited
     std::vector<std::uint32_t> offsets_;  // visits + 1, into the sample indices and weight_
-    std::vector<std::uint16_t> sample16_;  // the sample indices, when samples <= 65,536
-    std::vector<std::uint32_t> sample32_;  // otherwise
+    CompactIndices sample_;                // the sample indices
     std::vector<float> weight_;
 };
 
