@@ -62,39 +62,74 @@ TransferProduct checkedTransfer(const std::shared_ptr<const TranslucentAsset>& a
 
 // values[i] = max(0, update(i, values[i])) in one parallel pass: how many were negative and
 // how deep (zeroNegatives), and whether every updated value was finite (sum v * 0 is 0
-// exactly when every v is, and vectorizes).
+// exactly when every v is).
 struct Projected {
     RelightEngine::NegativeNoise noise;
     bool finite = true;
 };
 
+using Int4 = std::int32_t __attribute__((vector_size(16)));  // lane masks: -1 set, 0 clear
+constexpr Int4 kEveryLane = {-1, -1, -1, -1}, kFirstLane = {-1, 0, 0, 0};
+
+// The pass's running figures, four lanes wide. With one float of each, every value waited
+// for the previous value's add (GCC keeps float sums in order): the self term's pass of a
+// material edit on the 65,536-sample bunny took 0.12 ms, 0.06 ms this way.
+struct Extremes {
+    Float4 lowest = {}, highest = {}, zero = {};
+    Int4 negative = {};  // minus the count per lane
+
+    // v's lanes where keep is set.
+    void add(Float4 v, Int4 keep) {
+        const Int4 below = (v < lowest) & keep, above = (highest < v) & keep, dips = (v < 0.0f) & keep;
+        lowest = Float4((Int4(v) & below) | (Int4(lowest) & ~below));
+        highest = Float4((Int4(v) & above) | (Int4(highest) & ~above));
+        zero += Float4(Int4(v * 0.0f) & keep);
+        negative += dips;
+    }
+    void merge(const Extremes& o) {
+        const Int4 below = o.lowest < lowest, above = highest < o.highest;
+        lowest = Float4((Int4(o.lowest) & below) | (Int4(lowest) & ~below));
+        highest = Float4((Int4(o.highest) & above) | (Int4(highest) & ~above));
+        zero += o.zero;
+        negative += o.negative;
+    }
+};
+
+// max(v, 0) lane by lane; NaN stays NaN, for the finite check to report.
+inline Float4 nonNegative(Float4 v) { return Float4(Int4(v) & ~(v < 0.0f)); }
+
 template <typename Update>
 Projected projectNonNegative(std::span<float> values, const Update& update) {
-    struct Extremes {
-        float lowest = 0.0f, highest = 0.0f, zero = 0.0f;
-        std::uint64_t count = 0;
-    };
     const Extremes e = tbb::parallel_reduce(
         tbb::blocked_range<std::size_t>(0, values.size(), kValuesPerTask), Extremes{},
         [&](const tbb::blocked_range<std::size_t>& r, Extremes so) {
-            for (std::size_t i = r.begin(); i != r.end(); ++i) {
-                const float v = update(i, values[i]);
-                so.zero += v * 0.0f;
-                so.highest = std::max(so.highest, v);
-                so.lowest = std::min(so.lowest, v);
-                so.count += v < 0.0f;
-                values[i] = std::max(v, 0.0f);
+            std::size_t i = r.begin();
+            for (; i + 4 <= r.end(); i += 4) {
+                const Float4 v = {update(i, values[i]), update(i + 1, values[i + 1]), update(i + 2, values[i + 2]),
+                                  update(i + 3, values[i + 3])};
+                so.add(v, kEveryLane);
+                store4(values.data() + i, nonNegative(v));
+            }
+            for (; i != r.end(); ++i) {
+                const Float4 v = {update(i, values[i]), 0.0f, 0.0f, 0.0f};
+                so.add(v, kFirstLane);
+                values[i] = nonNegative(v)[0];
             }
             return so;
         },
         [](Extremes a, const Extremes& b) {
-            a.lowest = std::min(a.lowest, b.lowest);
-            a.highest = std::max(a.highest, b.highest);
-            a.zero += b.zero;
-            a.count += b.count;
+            a.merge(b);
             return a;
         });
-    return {{e.count, e.highest > 0.0f ? double(e.lowest) / double(e.highest) : 0.0}, e.zero == 0.0f};
+    float lowest = 0.0f, highest = 0.0f, zero = 0.0f;
+    std::uint64_t count = 0;
+    for (int l = 0; l < 4; ++l) {
+        lowest = std::min(lowest, e.lowest[l]);
+        highest = std::max(highest, e.highest[l]);
+        zero += e.zero[l];
+        count += std::uint64_t(-e.negative[l]);
+    }
+    return {{count, highest > 0.0f ? double(lowest) / double(highest) : 0.0}, zero == 0.0f};
 }
 
 }  // namespace
