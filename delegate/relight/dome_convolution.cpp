@@ -152,7 +152,7 @@ std::vector<float> DomeConvolution::exact(const Imath::V3f& normal) const {
     return out;
 }
 
-void DomeConvolution::add(const Imath::V3f& normal, float* moments) const {
+void DomeConvolution::add(const Imath::V3f& normal, const Imath::V3f& scale, float* moments) const {
     const Imath::V2f p = octahedralPoint(normal);
     const float x = std::clamp((p.x + 1.0f) * 0.5f * float(kNodes - 1), 0.0f, float(kNodes - 1));
     const float y = std::clamp((p.y + 1.0f) * 0.5f * float(kNodes - 1), 0.0f, float(kNodes - 1));
@@ -163,8 +163,11 @@ void DomeConvolution::add(const Imath::V3f& normal, float* moments) const {
     const float* b = a + stride;
     const float* c = a + kNodes * stride;
     const float* d = c + stride;
-    for (std::size_t k = 0; k < stride; ++k)
-        moments[k] += (1.0f - fy) * ((1.0f - fx) * a[k] + fx * b[k]) + fy * ((1.0f - fx) * c[k] + fx * d[k]);
+    for (std::size_t k = 0; k < stride; k += 3)
+        for (int ch = 0; ch < 3; ++ch) {
+            const std::size_t j = k + std::size_t(ch);
+            moments[j] += scale[ch] * ((1.0f - fy) * ((1.0f - fx) * a[j] + fx * b[j]) + fy * ((1.0f - fx) * c[j] + fx * d[j]));
+        }
 }
 
 }  // namespace opal

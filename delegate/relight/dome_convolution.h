@@ -35,8 +35,9 @@ public:
                     FresnelBasis basis);
 
     std::uint32_t terms() const { return terms_; }
-    // moments[m * 3 + c] += U_m(n)_c for a unit normal n.
-    void add(const Imath::V3f& normal, float* moments) const;
+    // moments[m * 3 + c] += scale_c U_m(n)_c for a unit normal n: U is linear in the
+    // radiance, so a dome's colour and intensity need no new sums.
+    void add(const Imath::V3f& normal, const Imath::V3f& scale, float* moments) const;
     // U_m(n) summed at exactly this normal, without the grid: what add() interpolates.
     std::vector<float> exact(const Imath::V3f& normal) const;
     std::size_t memoryBytes() const {

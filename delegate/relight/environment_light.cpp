@@ -123,14 +123,15 @@ Imath::M33d EnvironmentLight::domeFromObject(const Imath::M44d& objectToWorld) c
 }
 
 std::vector<float> EnvironmentLight::cubeRadiance(const CubeMapLayout& cube, const Imath::M44d& objectToWorld) const {
-    return cubeRadianceIn(cube, domeFromObject(objectToWorld));
+    return cubeRadianceIn(cube, domeFromObject(objectToWorld), scale_);
 }
 
-std::vector<float> EnvironmentLight::domeCubeRadiance(const CubeMapLayout& cube) const {
-    return cubeRadianceIn(cube, Imath::M33d());
+std::vector<float> EnvironmentLight::domeCubeMap(const CubeMapLayout& cube) const {
+    return cubeRadianceIn(cube, Imath::M33d(), Rgb(1.0));
 }
 
-std::vector<float> EnvironmentLight::cubeRadianceIn(const CubeMapLayout& cube, const Imath::M33d& domeFromCube) const {
+std::vector<float> EnvironmentLight::cubeRadianceIn(const CubeMapLayout& cube, const Imath::M33d& domeFromCube,
+                                                    const Rgb& scale) const {
     const std::uint32_t size = cube.faceSize();
     std::vector<float> radiance(std::size_t(cube.texels()) * 3);
     tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, cube.texels(), 64), [&](const auto& range) {
@@ -150,7 +151,7 @@ std::vector<float> EnvironmentLight::cubeRadianceIn(const CubeMapLayout& cube, c
                     sum += Imath::V3d(map_->sample(uv.x, uv.y, footprint)) * w;
                     weights += w;
                 }
-            for (int c = 0; c < 3; ++c) radiance[std::size_t(index) * 3 + c] = float(sum[c] / weights * scale_[c]);
+            for (int c = 0; c < 3; ++c) radiance[std::size_t(index) * 3 + c] = float(sum[c] / weights * scale[c]);
         }
     });
     return radiance;

@@ -94,16 +94,17 @@ public:
     // object space of a mesh placed by objectToWorld: texels x 3, area-averaged over each
     // texel (supersampled, weighted by solid angle).
     std::vector<float> cubeRadiance(const CubeMapLayout& cube, const Imath::M44d& objectToWorld) const;
-    // The same with the cube's directions in the dome's own frame: unchanged by the dome's and
-    // the mesh's transforms, so a rotation can reuse what is computed from it.
-    std::vector<float> domeCubeRadiance(const CubeMapLayout& cube) const;
+    // The map alone (before scale) with the cube's directions in the dome's own frame:
+    // unchanged by the dome's and the mesh's transforms and by its colour and intensity, so
+    // that a rotation or a colour edit can reuse what is computed from it.
+    std::vector<float> domeCubeMap(const CubeMapLayout& cube) const;
     // Row vectors: d_dome = d_object * domeFromObject(objectToWorld), a rotation.
     Imath::M33d domeFromObject(const Imath::M44d& objectToWorld) const;
     const Rgb& scale() const { return scale_; }
     const std::shared_ptr<const LatLongMap>& map() const { return map_; }
 
 private:
-    std::vector<float> cubeRadianceIn(const CubeMapLayout& cube, const Imath::M33d& domeFromCube) const;
+    std::vector<float> cubeRadianceIn(const CubeMapLayout& cube, const Imath::M33d& domeFromCube, const Rgb& scale) const;
 
     std::shared_ptr<const LatLongMap> map_;
     Imath::M33d domeFromWorld_;

@@ -240,8 +240,8 @@ void EnvironmentVectors::addRows(const Index* positions, const float* radiance, 
 }
 
 void EnvironmentVectors::addDome(std::vector<float> radiance, const DomeConvolution* open,
-                                 const Imath::M33d& domeFromObject, std::span<const SurfaceSample> samples,
-                                 IrradianceMoments& moments) {
+                                 const Imath::V3f& openScale, const Imath::M33d& domeFromObject,
+                                 std::span<const SurfaceSample> samples, IrradianceMoments& moments) {
     if (samples.size() != this->samples() || moments.terms != terms_ || moments.samples != this->samples())
         throw Error("dome light: the environment transfer has " + count(this->samples()) + " samples x " +
                     count(terms_) + " Fresnel terms, the asset " + count(samples.size()) + " samples, the irradiance " +
@@ -253,7 +253,7 @@ void EnvironmentVectors::addDome(std::vector<float> radiance, const DomeConvolut
                         count(terms_) + " Fresnel terms");
         const Imath::M33f turn(domeFromObject);
         tbb::parallel_for(tbb::blocked_range<std::size_t>(0, samples.size(), kSamplesPerTask), [&](const auto& range) {
-            for (std::size_t i = range.begin(); i != range.end(); ++i) open->add(samples[i].normal * turn, moments.sample(i));
+            for (std::size_t i = range.begin(); i != range.end(); ++i) open->add(samples[i].normal * turn, openScale, moments.sample(i));
         });
     }
     haarForwardCharts(std::span<float>(radiance), cube.charts(), 3);

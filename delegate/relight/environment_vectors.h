@@ -49,13 +49,16 @@ public:
 
     // The dome's E_m at every sample, added to `moments`: radiance is the dome on the cube
     // map in object space, texels x 3 (EnvironmentLight::cubeRadiance), and samples the
-    // asset's (their object-space normals). For occluded vectors, `open` is the dome's
-    // unoccluded integral in the dome's own frame (EnvironmentLight::domeCubeRadiance), read at
-    // each normal turned by domeFromObject (row vectors): a rotation needs no new one.
+    // asset's (their object-space normals). For occluded vectors, `open` is the dome map's
+    // unoccluded integral in the dome's own frame (EnvironmentLight::domeCubeMap), read at
+    // each normal turned by domeFromObject (row vectors) and multiplied by the dome's
+    // openScale (its colour x intensity x 2^exposure): a rotation or a colour edit needs no
+    // new one.
     // Throws opal::Error when the moments, the radiance or the samples do not match, or
     // occluded vectors come without `open`.
-    void addDome(std::vector<float> radiance, const DomeConvolution* open, const Imath::M33d& domeFromObject,
-                 std::span<const SurfaceSample> samples, IrradianceMoments& moments);
+    void addDome(std::vector<float> radiance, const DomeConvolution* open, const Imath::V3f& openScale,
+                 const Imath::M33d& domeFromObject, std::span<const SurfaceSample> samples,
+                 IrradianceMoments& moments);
     // E_m(x_i) += weight <v_{i,m}, L> for the stored vectors v, haarRadiance texels x 3 (the
     // cube radiance Haar transformed per face). Throws opal::Error when the moments or the
     // radiance do not match. Not thread-safe (nor addDome): the radiance is padded to 4

@@ -5,6 +5,7 @@
 #include "schema/error.h"
 #include "schema/scatter/fresnel_moments.h"
 
+#include <algorithm>
 #include <string>
 
 namespace opal {
@@ -62,16 +63,18 @@ void MeshIrradiance::compute(Contribution& c, const RayScene* scene) {
     const CubeMapLayout cube(asset_->environment.cubeFaceSize);
     const DomeConvolution* open = nullptr;
     if (environment_->kind() == EnvironmentVectorKind::Occluded) {
-        if (!open_.integral || open_.map != dome->map() || open_.scale != dome->scale()) {
+        if (!open_.integral || open_.map != dome->map()) {
             open_.integral.reset();  // a failed build leaves no stale integral
-            open_.integral = std::make_unique<const DomeConvolution>(cube, dome->domeCubeRadiance(cube), terms_, basis_);
+            const CubeMapLayout fine(std::max(kOpenFaceSize, cube.faceSize()));
+            open_.integral = std::make_unique<const DomeConvolution>(fine, dome->domeCubeMap(fine), terms_, basis_);
             open_.map = dome->map();
-            open_.scale = dome->scale();
         }
         open = open_.integral.get();
     }
-    environment_->addDome(dome->cubeRadiance(cube, objectToWorld_), open, dome->domeFromObject(objectToWorld_),
-                          asset_->samples, c.moments);
+    const Rgb& scale = dome->scale();
+    environment_->addDome(dome->cubeRadiance(cube, objectToWorld_), open,
+                          Imath::V3f(float(scale.x), float(scale.y), float(scale.z)),
+                          dome->domeFromObject(objectToWorld_), asset_->samples, c.moments);
     lastUpdate_.momentsMs = moments.ms();
 }
 

@@ -54,7 +54,7 @@ TEST(DomeConvolution, LinearSkyGivesClosedFormMoments) {
         for (int k = 0; k < 200; ++k) {
             const Imath::V3f n = randomNormal(rng);
             float u[9] = {};
-            open.add(n, u);
+            open.add(n, Imath::V3f(1.0f), u);
             for (int m = 0; m < 3; ++m) {
                 const double expected = linearSkyMoment(basis, m, a, b.dot(n));
                 // The cube map's texels straddle the horizon: about 0.3% of U_0.
@@ -79,7 +79,7 @@ TEST(DomeConvolution, InterpolationFollowsTheExactSum) {
     for (int k = 0; k < 2000; ++k) {
         const Imath::V3f n = randomNormal(rng);
         float u[6] = {};
-        open.add(n, u);
+        open.add(n, Imath::V3f(1.0f), u);
         const std::vector<float> exact = open.exact(n);
         for (int c = 0; c < 3; ++c) errors.push_back(std::abs(u[c] - exact[c]) / exact[c]);
     }
@@ -99,7 +99,7 @@ TEST(DomeConvolution, RejectsMismatchedInput) {
     EXPECT_THROW(DomeConvolution(cube, radiance, 4, FresnelBasis::Schlick), Error);
     const DomeConvolution open(cube, radiance, 1, FresnelBasis::Schlick);
     float u[3] = {};
-    open.add(Imath::V3f(0.0f), u);  // not a direction: a finite value, no crash
+    open.add(Imath::V3f(0.0f), Imath::V3f(1.0f), u);  // not a direction: a finite value, no crash
     EXPECT_TRUE(std::isfinite(u[0]));
 }
 
