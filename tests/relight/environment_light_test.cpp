@@ -41,19 +41,9 @@ TEST(LatLongMap, RejectsInconsistentPixels) {
 }
 
 // A map of f(direction) sampled at pixel centres.
-std::shared_ptr<LatLongMap> mapOf(int width, int height, const std::function<Imath::V3f(const Imath::V3d&)>& f) {
-    std::vector<float> rgb;
-    for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x) {
-            const Imath::V3f v = f(LatLongMap::direction((x + 0.5) / width, (y + 0.5) / height));
-            rgb.insert(rgb.end(), {v.x, v.y, v.z});
-        }
-    return std::make_shared<LatLongMap>(width, height, std::move(rgb));
-}
-
 TEST(EnvironmentLight, CubeTexelsSeeTheMapInTheRightDirection) {
     // Red from +X, green from +Y, blue from +Z, nothing elsewhere.
-    const auto map = mapOf(256, 128, [](const Imath::V3d& d) {
+    const auto map = test::latLongMap(256, 128, [](const Imath::V3d& d) {
         return Imath::V3f(d.x > 0.9 ? 1.0f : 0.0f, d.y > 0.9 ? 1.0f : 0.0f, d.z > 0.9 ? 1.0f : 0.0f);
     });
     const CubeMapLayout cube(8);
@@ -120,7 +110,7 @@ TEST(EnvironmentLight, LinearSkyGivesClosedFormMoments) {
     // E_1 = integral L mu (2 mu - 1) dw = (pi / 3)(a + b.n), for an unoccluded normal n.
     const double a = 2.0;
     const Imath::V3d b(0.5, 0.8, -0.3);
-    const auto map = mapOf(512, 256, [&](const Imath::V3d& d) { return Imath::V3f(float(a + b.dot(d))); });
+    const auto map = test::latLongMap(512, 256, [&](const Imath::V3d& d) { return Imath::V3f(float(a + b.dot(d))); });
     for (EnvironmentVectorKind kind : {EnvironmentVectorKind::Visible, EnvironmentVectorKind::Occluded})
         expectLinearSkyMoments(hemisphereAsset(32, 2, kind), a, b, map);
 }
@@ -186,8 +176,8 @@ TEST(EnvironmentLight, DomeRotationEqualsShiftedMap) {
 // or colour, gives the bytes a mesh lit by that dome from the start gets.
 TEST(EnvironmentLight, AKeptDomeIntegralFollowsEveryChangeButTheTransform) {
     const auto asset = hemisphereAsset(16, 2, EnvironmentVectorKind::Occluded);
-    const auto map = mapOf(64, 32, [](const Imath::V3d& d) { return Imath::V3f(float(1.0 + d.x), 1.0f, float(1.5 + d.z)); });
-    const auto other = mapOf(64, 32, [](const Imath::V3d& d) { return Imath::V3f(1.0f, float(2.0 - d.y), 1.0f); });
+    const auto map = test::latLongMap(64, 32, [](const Imath::V3d& d) { return Imath::V3f(float(1.0 + d.x), 1.0f, float(1.5 + d.z)); });
+    const auto other = test::latLongMap(64, 32, [](const Imath::V3d& d) { return Imath::V3f(1.0f, float(2.0 - d.y), 1.0f); });
     const auto dome = [](const std::shared_ptr<LatLongMap>& m, double degrees, double scale) {
         return std::make_shared<EnvironmentLight>(m, rotationY(degrees), Rgb(scale));
     };

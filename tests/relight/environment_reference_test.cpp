@@ -54,17 +54,12 @@ std::shared_ptr<const EnvironmentLight> uniformDome(const Imath::V3f& rgb) {
 // A sky brighter towards +Y with a small bright lobe around (1, 1, 1): light that changes
 // across the hemisphere, so that visibility and the quadrature matter.
 std::shared_ptr<const EnvironmentLight> structuredDome() {
-    const int width = 512, height = 256;
     const Imath::V3d lobe = Imath::V3d(1, 1, 1).normalized();
-    std::vector<float> pixels;
-    for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x) {
-            const Imath::V3d d = LatLongMap::direction((x + 0.5) / width, (y + 0.5) / height);
-            const double sky = 0.5 + 0.5 * d.y, sun = d.dot(lobe) > 0.95 ? 20.0 : 0.0;
-            pixels.insert(pixels.end(), {float(sky + sun), float(0.8 * sky + sun), float(0.6 + 0.3 * d.x + sun)});
-        }
-    return std::make_shared<EnvironmentLight>(std::make_shared<LatLongMap>(width, height, std::move(pixels)),
-                                              Imath::M44d(), Rgb(1.0));
+    const auto map = test::latLongMap(512, 256, [&](const Imath::V3d& d) {
+        const double sky = 0.5 + 0.5 * d.y, sun = d.dot(lobe) > 0.95 ? 20.0 : 0.0;
+        return Imath::V3f(float(sky + sun), float(0.8 * sky + sun), float(0.6 + 0.3 * d.x + sun));
+    });
+    return std::make_shared<EnvironmentLight>(map, Imath::M44d(), Rgb(1.0));
 }
 
 // A torus about +Y (major radius R, tube radius r) as major x minor planar quads, one sample
@@ -153,17 +148,12 @@ TEST(EnvironmentReference, UniformDomeOnAConvexSphereMeetsTheClosedForm) {
 // A sky with one small, bright light (3.6 degrees across, 2,000 times the sky), as a studio
 // map's lamps are.
 std::shared_ptr<const EnvironmentLight> lampDome() {
-    const int width = 1024, height = 512;
     const Imath::V3d lamp = Imath::V3d(0.3, 0.8, 0.5).normalized();
-    std::vector<float> pixels;
-    for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x) {
-            const Imath::V3d d = LatLongMap::direction((x + 0.5) / width, (y + 0.5) / height);
-            const float sky = float(0.5 + 0.5 * d.y), light = d.dot(lamp) > 0.9995 ? 2000.0f : 0.0f;
-            pixels.insert(pixels.end(), {sky + light, sky + light, 1.2f * sky + light});
-        }
-    return std::make_shared<EnvironmentLight>(std::make_shared<LatLongMap>(width, height, std::move(pixels)),
-                                              Imath::M44d(), Rgb(1.0));
+    const auto map = test::latLongMap(1024, 512, [&](const Imath::V3d& d) {
+        const float sky = float(0.5 + 0.5 * d.y), light = d.dot(lamp) > 0.9995 ? 2000.0f : 0.0f;
+        return Imath::V3f(sky + light, sky + light, 1.2f * sky + light);
+    });
+    return std::make_shared<EnvironmentLight>(map, Imath::M44d(), Rgb(1.0));
 }
 
 // Every sample of a convex object sees its whole hemisphere, so its dome E is the open

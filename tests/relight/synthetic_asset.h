@@ -3,6 +3,7 @@
 // counts, and the compressed transfer computed by brute force from the dense T_k.
 #pragma once
 
+#include "delegate/relight/environment_light.h"
 #include "delegate/relight/irradiance.h"
 #include "schema/asset/cube_map.h"
 #include "schema/asset/translucent_asset.h"
@@ -199,6 +200,18 @@ inline EnvironmentTransfer environmentTransfer(const TranslucentAsset& asset, st
         }
     }
     return env;
+}
+
+// A width x height lat-long map whose pixel centres take f(direction).
+inline std::shared_ptr<LatLongMap> latLongMap(int width, int height,
+                                              const std::function<Imath::V3f(const Imath::V3d&)>& f) {
+    std::vector<float> rgb;
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const Imath::V3f v = f(LatLongMap::direction((x + 0.5) / width, (y + 0.5) / height));
+            rgb.insert(rgb.end(), {v.x, v.y, v.z});
+        }
+    return std::make_shared<LatLongMap>(width, height, std::move(rgb));
 }
 
 // Random positive moments (E_0 dominant, as real irradiance).
