@@ -2,6 +2,7 @@
 
 #include "schema/asset/sidecar_checks.h"
 #include "schema/error.h"
+#include "schema/target_clones.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -90,22 +91,14 @@ void VertexGather::gather(const std::span<const float> (&perSample)[S], const st
 
 namespace {
 
-// GCC compiles the loop once per target and picks one at load time: with AVX2 the weight
-// is broadcast from memory and every operation has three operands, which took a material
-// edit's gather on the 65,536-sample bunny from 0.44-0.47 to 0.40-0.42 ms (the baseline
-// build spends a shuffle and a copy a weight). Clang cannot clone templates yet (the fuzz
-// targets' build) and compiles it for the baseline.
-#if defined(__clang__)
-#define OPAL_GATHER_CLONES
-#else
-#define OPAL_GATHER_CLONES __attribute__((target_clones("avx2", "default")))
-#endif
-
 // The sums over vertices [begin, end) of the visiting order. Sample indices are 16 bits
 // when they fit: a quarter fewer bytes than 32-bit indices, and the weights and indices are
-// most of what a material edit's gather reads.
+// most of what a material edit's gather reads. Compiled for AVX2 too (target_clones.h):
+// there the weight is broadcast from memory and every operation has three operands, which
+// took a material edit's gather on the 65,536-sample bunny from 0.44-0.47 to 0.40-0.42 ms
+// (the baseline build spends a shuffle and a copy a weight).
 template <int S, typename Index>
-OPAL_GATHER_CLONES void gatherRange(std::size_t begin, std::size_t end, const std::uint32_t* offsets,
+OPAL_TARGET_CLONES("avx2", "default") void gatherRange(std::size_t begin, std::size_t end, const std::uint32_t* offsets,
                                     const std::uint32_t* vertex, const Index* sample, const float* weight,
                                     const Float4* padded, float* const (&to)[S]) {
     for (std::size_t i = begin; i != end; ++i) {

@@ -1,6 +1,7 @@
 #include "schema/asset/normal_harmonics.h"
 
 #include "schema/error.h"
+#include "schema/target_clones.h"
 
 #include <eigen3/Eigen/Dense>
 #include <tbb/blocked_range.h>
@@ -88,13 +89,8 @@ constexpr std::size_t kFitBlock = 2048;
 // through Eigen's float GEMMs, which took 1.3 and 1.2 ms for the two products of a light
 // move on the 65,536-sample bunny (36 functions, 6 channels; these loops 0.7 and 0.6-0.8).
 
-// GCC compiles the two kernels once per target and picks one at load time; clang cannot
-// clone templates yet (the fuzz targets' build) and compiles them for the baseline.
-#if defined(__clang__)
-#define OPAL_FIT_CLONES
-#else
-#define OPAL_FIT_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
-#endif
+// The two kernels are compiled per target (schema/target_clones.h).
+#define OPAL_FIT_CLONES OPAL_TARGET_CLONES("avx512f", "avx2", "default")
 
 // Up to eight channels of one sample in a vector.
 using Lanes8 = float __attribute__((vector_size(8 * sizeof(float))));

@@ -8,7 +8,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdint>
 #include <numbers>
+#include <random>
 #include <string>
 
 namespace opal {
@@ -337,6 +340,24 @@ TEST(ZeroNegatives, ZeroesOnlyTheNegativesAndReportsTheDeepest) {
     std::vector<float> none = {0.0f, 3.0f};
     EXPECT_EQ(zeroNegatives(none).values, 0u);
     EXPECT_EQ(zeroNegatives(none).deepest, 0.0);
+}
+
+// Over several of the pass's tasks and a tail that is not whole vectors, against a plain
+// loop over the same values.
+TEST(ZeroNegatives, CountsEveryNegativeOfALongArray) {
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<float> uniform(-0.2f, 1.0f);
+    std::vector<float> values(3 * 32768 + 7);
+    for (float& v : values) v = uniform(rng);
+    values.back() = -0.5f;  // the deepest, in the tail
+    values[40000] = 3.0f;   // the highest, in the second task
+    std::uint64_t negatives = 0;
+    std::vector<float> expected = values;
+    for (float& v : expected) negatives += v < 0.0f, v = std::max(v, 0.0f);
+    const RelightEngine::NegativeNoise noise = zeroNegatives(values);
+    EXPECT_EQ(values, expected);
+    EXPECT_EQ(noise.values, negatives);
+    EXPECT_DOUBLE_EQ(noise.deepest, -0.5 / 3.0);
 }
 
 }  // namespace
