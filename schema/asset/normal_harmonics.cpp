@@ -89,9 +89,6 @@ constexpr std::size_t kFitBlock = 2048;
 // through Eigen's float GEMMs, which took 1.3 and 1.2 ms for the two products of a light
 // move on the 65,536-sample bunny (36 functions, 6 channels; these loops 0.7 and 0.6-0.8).
 
-// The two kernels are compiled per target (schema/target_clones.h).
-#define OPAL_FIT_CLONES OPAL_TARGET_CLONES("avx512f", "avx2", "default")
-
 // Up to eight channels of one sample in a vector.
 using Lanes8 = float __attribute__((vector_size(8 * sizeof(float))));
 
@@ -110,9 +107,10 @@ inline void loadRow(const float* v, std::size_t i, std::size_t wide, Lanes8& row
 }
 
 // sums[q * C + c] += sum over the block's rows i of f[i Q + q] v[i C + c], the functions
-// twelve at a time.
+// twelve at a time. Compiled per target, as subtractFit (schema/target_clones.h).
 template <std::size_t Q, std::size_t C>
-OPAL_FIT_CLONES void addProducts(const float* f, const float* v, std::size_t rows, std::size_t wide, double* sums) {
+OPAL_TARGET_CLONES("avx512f", "avx2", "default") void addProducts(const float* f, const float* v, std::size_t rows,
+                                                                 std::size_t wide, double* sums) {
     static_assert(C <= 8);
     constexpr std::size_t Chunk = Q % 12 == 0 ? 12 : Q;
     for (std::size_t q0 = 0; q0 < Q; q0 += Chunk) {
@@ -129,7 +127,7 @@ OPAL_FIT_CLONES void addProducts(const float* f, const float* v, std::size_t row
 
 // out[i stride + c] = v[i C + c] - sum_q f[i Q + q] a[q C + c] over the block's rows.
 template <std::size_t Q, std::size_t C>
-OPAL_FIT_CLONES void subtractFit(const float* f, const float* v, const float* a, std::size_t rows, std::size_t wide,
+OPAL_TARGET_CLONES("avx512f", "avx2", "default") void subtractFit(const float* f, const float* v, const float* a, std::size_t rows, std::size_t wide,
                                  float* out, std::size_t stride) {
     static_assert(C <= 8);
     Lanes8 aq[Q] = {};
