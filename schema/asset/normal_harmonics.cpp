@@ -127,8 +127,9 @@ OPAL_TARGET_CLONES("avx512f", "avx2", "default") void addProducts(const float* f
 
 // out[i stride + c] = v[i C + c] - sum_q f[i Q + q] a[q C + c] over the block's rows.
 template <std::size_t Q, std::size_t C>
-OPAL_TARGET_CLONES("avx512f", "avx2", "default") void subtractFit(const float* f, const float* v, const float* a, std::size_t rows, std::size_t wide,
-                                 float* out, std::size_t stride) {
+OPAL_TARGET_CLONES("avx512f", "avx2", "default") void subtractFit(const float* f, const float* v, const float* a,
+                                                                 std::size_t rows, std::size_t wide, float* out,
+                                                                 std::size_t stride) {
     static_assert(C <= 8);
     Lanes8 aq[Q] = {};
     for (std::size_t q = 0; q < Q; ++q)
